@@ -1,0 +1,16 @@
+//! # exact-geodesics
+//!
+//! Exact geodesics (shortest paths along the surface) on triangle meshes by the MMP algorithm in
+//! the wedge ("window") form of Surazhsky et al., generic over the number type.
+//!
+//! References, cited by key throughout the docs:
+//! - [LZT] Liu, Zhang, Tang, *Some properties of exact geodesics on triangular mesh surfaces*.
+//! - [SSK+05] Surazhsky, Surazhsky, Kirsanov, Gortler, Hoppe, *Fast exact and approximate
+//!   geodesics on meshes*, SIGGRAPH 2005.
+//! - [MMP87] Mitchell, Mount, Papadimitriou, *The discrete geodesic problem*, SIAM J. Comput. 1987.
+#![forbid(unsafe_code)]
+#![deny(missing_docs, rustdoc::broken_intra_doc_links)]
+
+pub mod mesh;
+
+pub use mesh::{EdgeId, FaceId, MeshError, TriMesh, ValidationReport, VertexId};

@@ -1,0 +1,1 @@
+//! Reading and writing OBJ, OFF and PLY (ASCII and binary) meshes.

@@ -1,0 +1,193 @@
+//! Triangle meshes: positions, faces and the edge-face topology the engine walks on.
+//!
+//! A [`TriMesh`] keeps the input's vertex order (including vertices that no face uses) and face
+//! order. It is built by [`TriMesh::new`], which validates at the door: hard errors become a
+//! [`MeshError`], usable oddities a [`ValidationReport`].
+
+mod error;
+mod ids;
+pub mod io;
+pub mod shapes;
+mod topology;
+mod validation;
+
+pub use error::MeshError;
+pub use ids::{EdgeId, FaceId, VertexId};
+pub use topology::{Edge, Wing};
+pub use validation::ValidationReport;
+
+/// A triangle mesh with its edge-face topology.
+///
+/// Edges are undirected; each has one or two faces (a third face is a [`MeshError`]). Corner `i`
+/// of a face and corner `i + 1` (mod 3) span the face's edge `i`.
+#[derive(Debug, Clone)]
+pub struct TriMesh {
+    positions: Vec<[f64; 3]>,
+    faces: Vec<[u32; 3]>,
+    topology: topology::Topology,
+    report: ValidationReport,
+}
+
+impl TriMesh {
+    /// Builds a mesh from positions and triangles (0-based vertex indices).
+    ///
+    /// # Errors
+    /// [`MeshError`] for a NaN or infinite coordinate, an index out of range, a face that repeats
+    /// a vertex, or an edge shared by more than two faces.
+    ///
+    /// # Example
+    /// ```
+    /// use exact_geodesics::TriMesh;
+    /// let mesh = TriMesh::new(
+    ///     vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+    ///     vec![[0, 1, 2]],
+    /// )?;
+    /// assert_eq!(mesh.edge_count(), 3);
+    /// # Ok::<(), exact_geodesics::MeshError>(())
+    /// ```
+    pub fn new(positions: Vec<[f64; 3]>, faces: Vec<[u32; 3]>) -> Result<TriMesh, MeshError> {
+        const MAX: usize = (u32::MAX - 1) as usize;
+        for count in [positions.len(), faces.len()] {
+            if count > MAX / 3 {
+                return Err(MeshError::TooLarge {
+                    count,
+                    max: MAX / 3,
+                });
+            }
+        }
+        for (vertex, p) in positions.iter().enumerate() {
+            if p.iter().any(|c| !c.is_finite()) {
+                return Err(MeshError::NonFiniteCoordinate {
+                    vertex,
+                    x: p[0],
+                    y: p[1],
+                    z: p[2],
+                });
+            }
+        }
+        for (face, f) in faces.iter().enumerate() {
+            for &index in f {
+                if index as usize >= positions.len() {
+                    return Err(MeshError::VertexIndexOutOfRange {
+                        face,
+                        index: u64::from(index),
+                        vertex_count: positions.len(),
+                    });
+                }
+            }
+            for i in 0..3 {
+                if f[i] == f[(i + 1) % 3] {
+                    return Err(MeshError::RepeatedVertex { face, vertex: f[i] });
+                }
+            }
+        }
+        let (topology, report) = topology::Topology::build(&positions, &faces)?;
+        Ok(TriMesh {
+            positions,
+            faces,
+            topology,
+            report,
+        })
+    }
+
+    /// Number of vertices, including those no face uses.
+    pub fn vertex_count(&self) -> usize {
+        self.positions.len()
+    }
+
+    /// Number of triangles.
+    pub fn face_count(&self) -> usize {
+        self.faces.len()
+    }
+
+    /// Number of undirected edges.
+    pub fn edge_count(&self) -> usize {
+        self.topology.edges.len()
+    }
+
+    /// All vertex positions, in input order.
+    pub fn positions(&self) -> &[[f64; 3]] {
+        &self.positions
+    }
+
+    /// The position of a vertex.
+    #[inline]
+    pub fn position(&self, v: VertexId) -> [f64; 3] {
+        self.positions[v.index()]
+    }
+
+    /// All faces as corner vertex indices, in input order.
+    pub fn faces(&self) -> &[[u32; 3]] {
+        &self.faces
+    }
+
+    /// The corners of a face.
+    #[inline]
+    pub fn face(&self, f: FaceId) -> [VertexId; 3] {
+        let c = self.faces[f.index()];
+        [VertexId(c[0]), VertexId(c[1]), VertexId(c[2])]
+    }
+
+    /// The edge with the given id.
+    #[inline]
+    pub fn edge(&self, e: EdgeId) -> &Edge {
+        &self.topology.edges[e.index()]
+    }
+
+    /// All edges.
+    pub fn edges(&self) -> &[Edge] {
+        &self.topology.edges
+    }
+
+    /// Edge `i` of face `f`: the one from corner `i` to corner `i + 1` (mod 3).
+    #[inline]
+    pub fn face_edges(&self, f: FaceId) -> [EdgeId; 3] {
+        self.topology.face_edges[f.index()]
+    }
+
+    /// The edge joining two vertices, if there is one.
+    pub fn edge_between(&self, a: VertexId, b: VertexId) -> Option<EdgeId> {
+        self.topology
+            .vertex_edges(a)
+            .iter()
+            .copied()
+            .find(|&e| self.edge(e).other(a) == Some(b))
+    }
+
+    /// Faces incident to a vertex.
+    pub fn vertex_faces(&self, v: VertexId) -> &[FaceId] {
+        self.topology.vertex_faces(v)
+    }
+
+    /// Edges incident to a vertex.
+    pub fn vertex_edges(&self, v: VertexId) -> &[EdgeId] {
+        self.topology.vertex_edges(v)
+    }
+
+    /// Sum of the face angles at a vertex, in radians (0 for a vertex no face uses).
+    pub fn angle_sum(&self, v: VertexId) -> f64 {
+        self.topology.angle_sum[v.index()]
+    }
+
+    /// Whether the vertex lies on the boundary or joins several fans (a bowtie).
+    pub fn is_boundary_vertex(&self, v: VertexId) -> bool {
+        self.topology.boundary_vertex[v.index()]
+    }
+
+    /// The face on side `side` (0 or 1, as in [`Edge::faces`]) of an edge, with its apex and
+    /// its two other edges; `None` if that side has no face.
+    #[inline]
+    pub fn wing(&self, e: EdgeId, side: usize) -> Option<&Wing> {
+        self.topology.wings[2 * e.index() + side].as_ref()
+    }
+
+    /// Length of every edge, indexed by [`EdgeId`].
+    pub fn edge_lengths(&self) -> &[f64] {
+        &self.topology.edge_length
+    }
+
+    /// What was unusual but acceptable about the input.
+    pub fn validation(&self) -> &ValidationReport {
+        &self.report
+    }
+}

@@ -1,0 +1,1 @@
+//! Meshes the program generates itself: for tests, examples and the README's first command.

@@ -1,0 +1,316 @@
+//! Edge-face topology: undirected edges, the faces on each side, vertex stars.
+
+use super::{EdgeId, FaceId, MeshError, ValidationReport, VertexId};
+use std::collections::HashMap;
+
+/// An undirected edge: its two end vertices (`vertices[0] < vertices[1]`) and its one or two faces.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Edge {
+    /// End vertices; the edge's local x axis runs from `vertices[0]` to `vertices[1]`.
+    pub vertices: [VertexId; 2],
+    /// The face on each side; `faces[1]` is `None` on the boundary.
+    pub faces: [Option<FaceId>; 2],
+}
+
+impl Edge {
+    /// The end opposite to `v`, or `None` if `v` is not an end of this edge.
+    pub fn other(&self, v: VertexId) -> Option<VertexId> {
+        if self.vertices[0] == v {
+            Some(self.vertices[1])
+        } else if self.vertices[1] == v {
+            Some(self.vertices[0])
+        } else {
+            None
+        }
+    }
+
+    /// Whether the edge has a single face.
+    pub fn is_boundary(&self) -> bool {
+        self.faces[1].is_none()
+    }
+
+    /// The side (0 or 1) on which `f` lies, if `f` is one of the edge's faces.
+    pub fn side_of(&self, f: FaceId) -> Option<usize> {
+        self.faces.iter().position(|&g| g == Some(f))
+    }
+}
+
+/// A face seen from one of its edges: the apex (the corner opposite the edge) and the two other
+/// edges, `near` joining `vertices[0]` of the edge to the apex and `far` joining the apex to
+/// `vertices[1]`. This is the combinatorial half of unfolding a face across an edge [SSK+05 §3].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Wing {
+    /// The face.
+    pub face: FaceId,
+    /// The corner of the face opposite the edge.
+    pub apex: VertexId,
+    /// The face's edge from the edge's `vertices[0]` to the apex.
+    pub near: EdgeId,
+    /// The face's edge from the apex to the edge's `vertices[1]`.
+    pub far: EdgeId,
+}
+
+#[derive(Debug, Clone)]
+pub(super) struct Topology {
+    pub(super) edges: Vec<Edge>,
+    pub(super) face_edges: Vec<[EdgeId; 3]>,
+    pub(super) wings: Vec<Option<Wing>>,
+    pub(super) edge_length: Vec<f64>,
+    pub(super) angle_sum: Vec<f64>,
+    pub(super) boundary_vertex: Vec<bool>,
+    vertex_face_start: Vec<u32>,
+    vertex_face_list: Vec<FaceId>,
+    vertex_edge_start: Vec<u32>,
+    vertex_edge_list: Vec<EdgeId>,
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// Compressed adjacency lists: `start[v]..start[v + 1]` indexes `list`.
+fn csr<T>(n: usize, pairs: impl Iterator<Item = (usize, T)>) -> (Vec<u32>, Vec<T>) {
+    let mut pairs: Vec<(usize, T)> = pairs.collect();
+    pairs.sort_by_key(|&(v, _)| v);
+    let mut start = vec![0u32; n + 1];
+    for &(v, _) in &pairs {
+        start[v + 1] += 1;
+    }
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    (start, pairs.into_iter().map(|(_, t)| t).collect())
+}
+
+struct UnionFind(Vec<u32>);
+impl UnionFind {
+    fn new(n: usize) -> Self {
+        UnionFind((0..n as u32).collect())
+    }
+    fn find(&mut self, mut x: u32) -> u32 {
+        while self.0[x as usize] != x {
+            let parent = self.0[self.0[x as usize] as usize];
+            self.0[x as usize] = parent;
+            x = parent;
+        }
+        x
+    }
+    fn union(&mut self, a: u32, b: u32) {
+        let (ra, rb) = (self.find(a), self.find(b));
+        if ra != rb {
+            self.0[ra.max(rb) as usize] = ra.min(rb);
+        }
+    }
+}
+
+impl Topology {
+    pub(super) fn build(
+        positions: &[[f64; 3]],
+        faces: &[[u32; 3]],
+    ) -> Result<(Topology, ValidationReport), MeshError> {
+        let nv = positions.len();
+        let mut report = ValidationReport::default();
+        let mut edge_of: HashMap<(u32, u32), u32> = HashMap::with_capacity(faces.len() * 2);
+        let mut edges: Vec<Edge> = Vec::with_capacity(faces.len() * 3 / 2 + 3);
+        let mut extra_faces: HashMap<u32, Vec<usize>> = HashMap::new();
+        let mut face_edges = Vec::with_capacity(faces.len());
+        let mut forward: Vec<[bool; 2]> = Vec::with_capacity(edges.capacity());
+        for (fi, f) in faces.iter().enumerate() {
+            let mut fe = [EdgeId(0); 3];
+            for i in 0..3 {
+                let (a, b) = (f[i], f[(i + 1) % 3]);
+                let key = (a.min(b), a.max(b));
+                let id = *edge_of.entry(key).or_insert_with(|| {
+                    edges.push(Edge {
+                        vertices: [VertexId(key.0), VertexId(key.1)],
+                        faces: [None, None],
+                    });
+                    forward.push([false; 2]);
+                    (edges.len() - 1) as u32
+                });
+                let edge = &mut edges[id as usize];
+                let slot = if edge.faces[0].is_none() {
+                    0
+                } else if edge.faces[1].is_none() {
+                    1
+                } else {
+                    extra_faces.entry(id).or_default().push(fi);
+                    continue;
+                };
+                edge.faces[slot] = Some(FaceId(fi as u32));
+                forward[id as usize][slot] = a < b;
+                fe[i] = EdgeId(id);
+            }
+            face_edges.push(fe);
+        }
+        if let Some((&id, extra)) = extra_faces.iter().min_by_key(|(&id, _)| id) {
+            let e = &edges[id as usize];
+            let mut listed: Vec<usize> = e.faces.iter().flatten().map(|f| f.index()).collect();
+            listed.extend(extra.iter().copied());
+            return Err(MeshError::NonManifoldEdge {
+                a: e.vertices[0].0,
+                b: e.vertices[1].0,
+                face_count: listed.len(),
+                faces: listed.into_iter().take(3).collect(),
+            });
+        }
+
+        let edge_length: Vec<f64> = edges
+            .iter()
+            .map(|e| {
+                let d = sub(
+                    positions[e.vertices[1].index()],
+                    positions[e.vertices[0].index()],
+                );
+                dot(d, d).sqrt()
+            })
+            .collect();
+
+        let mut wings = Vec::with_capacity(2 * edges.len());
+        for (ei, e) in edges.iter().enumerate() {
+            for side in 0..2 {
+                wings.push(e.faces[side].map(|f| {
+                    let corners = faces[f.index()];
+                    let fe = face_edges[f.index()];
+                    let k = fe
+                        .iter()
+                        .position(|&x| x.index() == ei)
+                        .expect("edge belongs to face");
+                    let apex = VertexId(corners[(k + 2) % 3]);
+                    // The face's other two edges: k+1 goes from corner k+1 to the apex, k+2 from the apex to corner k.
+                    let (after, before) = (fe[(k + 1) % 3], fe[(k + 2) % 3]);
+                    let (near, far) = if VertexId(corners[k]) == e.vertices[0] {
+                        (before, after)
+                    } else {
+                        (after, before)
+                    };
+                    Wing {
+                        face: f,
+                        apex,
+                        near,
+                        far,
+                    }
+                }));
+            }
+            if forward[ei][0] == forward[ei][1] && e.faces[1].is_some() {
+                report.inconsistently_oriented_edges += 1;
+            }
+        }
+        report.boundary_edges = edges.iter().filter(|e| e.is_boundary()).count();
+
+        let (vertex_face_start, vertex_face_list) = csr(
+            nv,
+            faces
+                .iter()
+                .enumerate()
+                .flat_map(|(fi, f)| f.iter().map(move |&v| (v as usize, FaceId(fi as u32)))),
+        );
+        let (vertex_edge_start, vertex_edge_list) = csr(
+            nv,
+            edges.iter().enumerate().flat_map(|(ei, e)| {
+                e.vertices
+                    .iter()
+                    .map(move |v| (v.index(), EdgeId(ei as u32)))
+            }),
+        );
+
+        let mut angle_sum = vec![0.0; nv];
+        for (fi, f) in faces.iter().enumerate() {
+            let p = [0, 1, 2].map(|i| positions[f[i] as usize]);
+            let n = cross(sub(p[1], p[0]), sub(p[2], p[0]));
+            let scale = dot(sub(p[1], p[0]), sub(p[1], p[0])).sqrt()
+                * dot(sub(p[2], p[0]), sub(p[2], p[0])).sqrt();
+            if dot(n, n).sqrt() <= f64::EPSILON * scale {
+                report.zero_area_faces.push(FaceId(fi as u32));
+            }
+            for i in 0..3 {
+                let u = sub(p[(i + 1) % 3], p[i]);
+                let w = sub(p[(i + 2) % 3], p[i]);
+                let c = cross(u, w);
+                angle_sum[f[i] as usize] += dot(c, c).sqrt().atan2(dot(u, w));
+            }
+        }
+
+        let mut boundary_vertex = vec![false; nv];
+        for e in edges.iter().filter(|e| e.is_boundary()) {
+            for v in e.vertices {
+                boundary_vertex[v.index()] = true;
+            }
+        }
+        for v in 0..nv {
+            let star =
+                &vertex_face_list[vertex_face_start[v] as usize..vertex_face_start[v + 1] as usize];
+            if star.is_empty() {
+                report.unreferenced_vertices.push(VertexId(v as u32));
+                continue;
+            }
+            let mut fans = UnionFind::new(star.len());
+            for e in
+                &vertex_edge_list[vertex_edge_start[v] as usize..vertex_edge_start[v + 1] as usize]
+            {
+                if let [Some(f0), Some(f1)] = edges[e.index()].faces {
+                    let i0 = star.iter().position(|&f| f == f0);
+                    let i1 = star.iter().position(|&f| f == f1);
+                    if let (Some(i0), Some(i1)) = (i0, i1) {
+                        fans.union(i0 as u32, i1 as u32);
+                    }
+                }
+            }
+            let fan_count = (0..star.len() as u32)
+                .filter(|&i| fans.find(i) == i)
+                .count();
+            if fan_count > 1 {
+                report.non_manifold_vertices.push(VertexId(v as u32));
+                boundary_vertex[v] = true;
+            }
+        }
+
+        let mut components = UnionFind::new(faces.len());
+        for e in &edges {
+            if let [Some(f0), Some(f1)] = e.faces {
+                components.union(f0.0, f1.0);
+            }
+        }
+        report.components = (0..faces.len() as u32)
+            .filter(|&f| components.find(f) == f)
+            .count();
+
+        Ok((
+            Topology {
+                edges,
+                face_edges,
+                wings,
+                edge_length,
+                angle_sum,
+                boundary_vertex,
+                vertex_face_start,
+                vertex_face_list,
+                vertex_edge_start,
+                vertex_edge_list,
+            },
+            report,
+        ))
+    }
+
+    pub(super) fn vertex_faces(&self, v: VertexId) -> &[FaceId] {
+        let i = v.index();
+        &self.vertex_face_list
+            [self.vertex_face_start[i] as usize..self.vertex_face_start[i + 1] as usize]
+    }
+
+    pub(super) fn vertex_edges(&self, v: VertexId) -> &[EdgeId] {
+        let i = v.index();
+        &self.vertex_edge_list
+            [self.vertex_edge_start[i] as usize..self.vertex_edge_start[i + 1] as usize]
+    }
+}

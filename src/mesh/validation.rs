@@ -1,0 +1,68 @@
+//! What is unusual about a mesh that is still usable.
+//!
+//! Hard errors ([`MeshError`](super::MeshError)) stop a mesh from being built; the conditions
+//! here do not, but a researcher wants to know about them because they change what the
+//! distances mean (e.g. vertices no face uses are unreachable, with distance +infinity).
+
+use super::{FaceId, VertexId};
+use serde::Serialize;
+
+/// Conditions found while building a [`TriMesh`](super::TriMesh) that leave it usable.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct ValidationReport {
+    /// Faces whose three corners are collinear (area zero in f64).
+    pub zero_area_faces: Vec<FaceId>,
+    /// Vertices that no face uses; they are unreachable from any source on a face.
+    pub unreferenced_vertices: Vec<VertexId>,
+    /// Vertices whose incident faces form more than one fan (a "bowtie"). Geodesics may pass
+    /// through such a vertex from one fan to another; it is treated as a pseudo-source.
+    pub non_manifold_vertices: Vec<VertexId>,
+    /// Edges whose two faces traverse them in the same direction (inconsistent orientation).
+    /// The engine does not need a consistent orientation; writers keep the input order.
+    pub inconsistently_oriented_edges: usize,
+    /// Number of edges with a single face.
+    pub boundary_edges: usize,
+    /// Number of connected components of faces (vertices without faces not counted).
+    pub components: usize,
+}
+
+impl ValidationReport {
+    /// Human-readable warnings, one per kind of condition, empty for a clean closed mesh.
+    pub fn warnings(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        if !self.zero_area_faces.is_empty() {
+            out.push(format!(
+                "{} zero-area face(s), first {}",
+                self.zero_area_faces.len(),
+                self.zero_area_faces[0]
+            ));
+        }
+        if !self.unreferenced_vertices.is_empty() {
+            out.push(format!(
+                "{} vertex(es) used by no face (unreachable, distance inf), first {}",
+                self.unreferenced_vertices.len(),
+                self.unreferenced_vertices[0]
+            ));
+        }
+        if !self.non_manifold_vertices.is_empty() {
+            out.push(format!(
+                "{} non-manifold (bowtie) vertex(es), first {}",
+                self.non_manifold_vertices.len(),
+                self.non_manifold_vertices[0]
+            ));
+        }
+        if self.inconsistently_oriented_edges > 0 {
+            out.push(format!(
+                "{} edge(s) with inconsistently oriented faces",
+                self.inconsistently_oriented_edges
+            ));
+        }
+        if self.components > 1 {
+            out.push(format!(
+                "{} connected components: points in other components than the sources are unreachable",
+                self.components
+            ));
+        }
+        out
+    }
+}
