@@ -12,5 +12,12 @@
 #![deny(missing_docs, rustdoc::broken_intra_doc_links)]
 
 pub mod mesh;
+pub mod mmp;
+pub mod scalar;
 
 pub use mesh::{EdgeId, FaceId, MeshError, TriMesh, ValidationReport, VertexId};
+pub use mmp::{
+    propagate, propagate_with_progress, GeodesicField, GeodesicPath, PointError, PropagateOptions,
+    PseudoSource, Side, Stats, SurfacePoint, TraceError, Wedge,
+};
+pub use scalar::Scalar;

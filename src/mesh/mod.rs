@@ -169,6 +169,18 @@ impl TriMesh {
         self.topology.angle_sum[v.index()]
     }
 
+    /// Whether geodesics may bend at the vertex, so that it must act as a pseudo-source [MMP87]:
+    /// boundary and bowtie vertices, and vertices whose angle sum is at least 2 pi (saddles and,
+    /// to be safe under rounding, flat ones). Over-approximating costs wedges, never correctness:
+    /// a path through any vertex is a path on the surface.
+    pub fn may_bend_geodesics(&self, v: VertexId) -> bool {
+        /// Angle sums this close to 2 pi (relative) count as flat; acos-based sums carry ~1e-15.
+        const FLAT_SLACK: f64 = 1e-9;
+        let i = v.index();
+        self.topology.boundary_vertex[i]
+            || self.topology.angle_sum[i] >= std::f64::consts::TAU * (1.0 - FLAT_SLACK)
+    }
+
     /// Whether the vertex lies on the boundary or joins several fans (a bowtie).
     pub fn is_boundary_vertex(&self, v: VertexId) -> bool {
         self.topology.boundary_vertex[v.index()]

@@ -1,0 +1,97 @@
+//! The result of a propagation: the final wedges on every edge and the vertex distances.
+
+use super::propagate::VertexDistance;
+use super::source::SurfacePoint;
+use super::stats::Stats;
+use super::unfold::Unfolding;
+use super::wedge::Wedge;
+use crate::mesh::{EdgeId, TriMesh, VertexId};
+use crate::scalar::Scalar;
+
+/// The geodesic distance field of a set of sources: the 1D subdivision of the edges into final
+/// wedges [LZT §2] and everything that can be read from it.
+///
+/// Unreachable points (another component, a vertex no face uses, or beyond the maximum
+/// distance) have distance `f64::INFINITY` and no nearest source.
+pub struct GeodesicField<'m, S: Scalar> {
+    pub(crate) mesh: &'m TriMesh,
+    pub(crate) unfolding: Unfolding<S>,
+    pub(crate) sources: Vec<SurfacePoint>,
+    pub(crate) wedges: Vec<Vec<Wedge<S>>>,
+    pub(crate) vertices: Vec<Option<VertexDistance<S>>>,
+    pub(crate) stats: Stats,
+}
+
+impl<'m, S: Scalar> GeodesicField<'m, S> {
+    pub(crate) fn new(
+        mesh: &'m TriMesh,
+        unfolding: Unfolding<S>,
+        sources: Vec<SurfacePoint>,
+        wedges: Vec<Vec<Wedge<S>>>,
+        vertices: Vec<Option<VertexDistance<S>>>,
+        stats: Stats,
+    ) -> Self {
+        GeodesicField {
+            mesh,
+            unfolding,
+            sources,
+            wedges,
+            vertices,
+            stats,
+        }
+    }
+
+    /// The mesh the field lives on.
+    pub fn mesh(&self) -> &'m TriMesh {
+        self.mesh
+    }
+
+    /// The sources, validated and in canonical form, in the order given.
+    pub fn sources(&self) -> &[SurfacePoint] {
+        &self.sources
+    }
+
+    /// What happened during the propagation.
+    pub fn stats(&self) -> &Stats {
+        &self.stats
+    }
+
+    /// The geodesic distance of a vertex to its nearest source; `f64::INFINITY` if unreachable.
+    pub fn vertex_distance(&self, v: VertexId) -> f64 {
+        self.vertices[v.index()]
+            .as_ref()
+            .map_or(f64::INFINITY, |d| d.distance.to_f64())
+    }
+
+    /// The distance of every vertex, in file order (`f64::INFINITY` where unreachable).
+    pub fn vertex_distances(&self) -> Vec<f64> {
+        (0..self.mesh.vertex_count())
+            .map(|v| self.vertex_distance(VertexId(v as u32)))
+            .collect()
+    }
+
+    /// A vertex's distance in the backend's own number type; `None` if unreachable.
+    pub fn vertex_distance_exact(&self, v: VertexId) -> Option<&S> {
+        self.vertices[v.index()].as_ref().map(|d| &d.distance)
+    }
+
+    /// Index (into [`sources`](Self::sources)) of the source nearest to a vertex.
+    pub fn nearest_source(&self, v: VertexId) -> Option<usize> {
+        self.vertices[v.index()].as_ref().map(|d| d.source)
+    }
+
+    /// The final wedges on an edge, sorted along it (from its `vertices[0]`).
+    pub fn wedges(&self, e: EdgeId) -> &[Wedge<S>] {
+        &self.wedges[e.index()]
+    }
+
+    /// The number of final wedges on every edge.
+    pub fn wedge_counts(&self) -> Vec<usize> {
+        self.wedges.iter().map(Vec::len).collect()
+    }
+
+    /// The length of an edge in the backend's number type.
+    pub fn edge_length(&self, e: EdgeId) -> &S {
+        self.unfolding.length(e)
+    }
+}

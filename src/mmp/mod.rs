@@ -1,0 +1,23 @@
+//! The MMP engine in the wedge form of Surazhsky et al. [SSK+05], as described in [LZT §2]:
+//! wedges are propagated across faces in continuous-Dijkstra order; where wedges meet on an edge
+//! they are intersected by solving eq. (2) (Section 4); the final wedges on the edges induce the
+//! subdivision from which distances are read and paths traced back (Section 2).
+
+mod coverage;
+mod field;
+mod intersect;
+mod propagate;
+mod query;
+mod source;
+mod stats;
+mod trace_back;
+mod unfold;
+mod wedge;
+
+pub use coverage::{CoverageIssue, CoverageReport};
+pub use field::GeodesicField;
+pub use propagate::{propagate, propagate_with_progress, PropagateOptions, Progress};
+pub use source::{PointError, SurfacePoint};
+pub use stats::{Eq2Counts, Stats};
+pub use trace_back::{GeodesicPath, TraceError};
+pub use wedge::{PseudoSource, Side, Wedge};

@@ -1,0 +1,459 @@
+//! Continuous Dijkstra over wedges [SSK+05 §4, LZT §2]: a priority queue of wedges ordered by
+//! the smallest distance each gives, and of vertices waiting to act as pseudo-sources.
+
+use super::field::GeodesicField;
+use super::source::{PointError, SurfacePoint};
+use super::stats::Stats;
+use super::unfold::{planar_coordinates, position_in_space, FaceLayout, Planar, Unfolding};
+use super::wedge::{PseudoSource, Side, Wedge};
+use crate::mesh::{EdgeId, TriMesh, VertexId};
+use crate::scalar::{Scalar, Sign};
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+use std::time::Instant;
+
+/// Options of a propagation.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PropagateOptions {
+    /// Stop once every point closer than this is final; farther points are reported as
+    /// unreachable (+infinity). `None` propagates over the whole surface.
+    pub max_distance: Option<f64>,
+}
+
+impl PropagateOptions {
+    /// Stops the propagation at the given distance.
+    pub fn with_max_distance(mut self, d: f64) -> Self {
+        self.max_distance = Some(d);
+        self
+    }
+}
+
+/// Progress of a running propagation, reported to the callback of [`propagate_with_progress`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Progress {
+    /// Vertices with a finite distance so far.
+    pub vertices_reached: usize,
+    /// Vertices in the mesh.
+    pub vertex_count: usize,
+    /// Distance of the propagation front.
+    pub front: f64,
+}
+
+/// Computes the geodesic distance field from `sources` by propagating wedges.
+///
+/// Every source is validated first ([`SurfacePoint::validated`]). The result answers distance,
+/// nearest-source and back-trace queries; points that cannot be reached (another component, a
+/// vertex no face uses, beyond `max_distance`) are at distance `f64::INFINITY`.
+///
+/// # Errors
+/// [`PointError`] if there is no source or a source is not a point of the mesh.
+///
+/// # Example
+/// ```
+/// use exact_geodesics::{mesh::shapes, propagate, PropagateOptions, SurfacePoint, VertexId};
+/// let cube = shapes::cube();
+/// let field = propagate::<f64>(&cube, &[SurfacePoint::Vertex(VertexId(0))], &PropagateOptions::default())?;
+/// let opposite = (0..8).map(|v| field.vertex_distance(VertexId(v))).fold(0.0, f64::max);
+/// assert!((opposite - 5f64.sqrt()).abs() < 1e-12);
+/// # Ok::<(), exact_geodesics::PointError>(())
+/// ```
+pub fn propagate<'m, S: Scalar>(
+    mesh: &'m TriMesh,
+    sources: &[SurfacePoint],
+    options: &PropagateOptions,
+) -> Result<GeodesicField<'m, S>, PointError> {
+    propagate_with_progress(mesh, sources, options, |_| {})
+}
+
+/// [`propagate`], calling `progress` now and then with how far it got.
+///
+/// # Errors
+/// As [`propagate`].
+pub fn propagate_with_progress<'m, S: Scalar>(
+    mesh: &'m TriMesh,
+    sources: &[SurfacePoint],
+    options: &PropagateOptions,
+    mut progress: impl FnMut(&Progress),
+) -> Result<GeodesicField<'m, S>, PointError> {
+    if sources.is_empty() {
+        return Err(PointError::NoSource);
+    }
+    let sources = sources
+        .iter()
+        .map(|p| p.validated(mesh))
+        .collect::<Result<Vec<_>, _>>()?;
+    let started = Instant::now();
+    let mut engine = Engine::new(mesh, options);
+    for (k, point) in sources.iter().enumerate() {
+        engine.emit_source(k, point);
+    }
+    engine.run(&mut progress);
+    engine.stats.propagation_seconds = started.elapsed().as_secs_f64();
+    Ok(engine.finish(sources))
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum SlotState {
+    Queued,
+    Propagated,
+    Free,
+}
+
+#[derive(Clone, Debug)]
+pub(crate) struct Slot<S> {
+    pub(crate) wedge: Wedge<S>,
+    pub(crate) state: SlotState,
+    pub(crate) generation: u32,
+}
+
+/// The best known distance of a vertex: an upper bound during propagation, final after it.
+#[derive(Clone, Debug)]
+pub(crate) struct VertexDistance<S> {
+    pub(crate) distance: S,
+    pub(crate) approx: f64,
+    pub(crate) source: usize,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum EventKind {
+    Wedge { slot: u32, generation: u32 },
+    Vertex(VertexId),
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Event {
+    key: f64,
+    kind: EventKind,
+}
+
+impl PartialEq for Event {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+impl Eq for Event {}
+impl PartialOrd for Event {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Event {
+    /// Reversed, so that `BinaryHeap` pops the nearest event first.
+    fn cmp(&self, other: &Self) -> Ordering {
+        other.key.total_cmp(&self.key)
+    }
+}
+
+pub(crate) struct Engine<'m, S: Scalar> {
+    pub(crate) mesh: &'m TriMesh,
+    pub(crate) unfolding: Unfolding<S>,
+    pub(crate) slots: Vec<Slot<S>>,
+    pub(crate) free: Vec<u32>,
+    pub(crate) lists: Vec<Vec<u32>>,
+    pub(crate) list_entries: usize,
+    pub(crate) vertices: Vec<Option<VertexDistance<S>>>,
+    emitted_at: Vec<f64>,
+    queue: BinaryHeap<Event>,
+    max_distance: f64,
+    reached: usize,
+    pub(crate) stats: Stats,
+}
+
+impl<'m, S: Scalar> Engine<'m, S> {
+    fn new(mesh: &'m TriMesh, options: &PropagateOptions) -> Self {
+        Engine {
+            mesh,
+            unfolding: Unfolding::new(mesh),
+            slots: Vec::new(),
+            free: Vec::new(),
+            lists: vec![Vec::new(); mesh.edge_count()],
+            list_entries: 0,
+            vertices: vec![None; mesh.vertex_count()],
+            emitted_at: vec![f64::INFINITY; mesh.vertex_count()],
+            queue: BinaryHeap::new(),
+            max_distance: options.max_distance.unwrap_or(f64::INFINITY),
+            reached: 0,
+            stats: Stats::default(),
+        }
+    }
+
+    fn run(&mut self, progress: &mut impl FnMut(&Progress)) {
+        let mut events = 0u64;
+        while let Some(event) = self.queue.pop() {
+            if event.key > self.max_distance {
+                break;
+            }
+            events += 1;
+            if events % 8192 == 0 {
+                progress(&Progress {
+                    vertices_reached: self.reached,
+                    vertex_count: self.mesh.vertex_count(),
+                    front: event.key,
+                });
+            }
+            match event.kind {
+                EventKind::Wedge { slot, generation } => {
+                    let s = &mut self.slots[slot as usize];
+                    if s.generation == generation && s.state == SlotState::Queued {
+                        s.state = SlotState::Propagated;
+                        let wedge = s.wedge.clone();
+                        self.stats.wedges_propagated += 1;
+                        self.propagate_wedge(&wedge);
+                    }
+                }
+                EventKind::Vertex(v) => {
+                    let Some(known) = &self.vertices[v.index()] else { continue };
+                    if known.approx < self.emitted_at[v.index()] {
+                        self.emitted_at[v.index()] = known.approx;
+                        let (sigma, source) = (known.distance.clone(), known.source);
+                        self.stats.pseudo_source_emissions += 1;
+                        self.emit_from_vertex(v, sigma, PseudoSource::Vertex(v), source);
+                    }
+                }
+            }
+        }
+        progress(&Progress {
+            vertices_reached: self.reached,
+            vertex_count: self.mesh.vertex_count(),
+            front: self.max_distance.min(f64::MAX),
+        });
+    }
+
+    fn finish(self, sources: Vec<SurfacePoint>) -> GeodesicField<'m, S> {
+        let max = self.max_distance;
+        let mut vertices = self.vertices;
+        for v in vertices.iter_mut() {
+            if v.as_ref().is_some_and(|d| d.approx > max) {
+                *v = None;
+            }
+        }
+        let slots = self.slots;
+        let wedges: Vec<Vec<Wedge<S>>> = self
+            .lists
+            .iter()
+            .map(|list| list.iter().map(|&i| slots[i as usize].wedge.clone()).collect())
+            .collect();
+        GeodesicField::new(self.mesh, self.unfolding, sources, wedges, vertices, self.stats)
+    }
+
+    pub(crate) fn push_wedge_event(&mut self, slot: u32) {
+        let s = &self.slots[slot as usize];
+        let key = s.wedge.min_distance().to_f64();
+        self.queue.push(Event {
+            key,
+            kind: EventKind::Wedge {
+                slot,
+                generation: s.generation,
+            },
+        });
+        self.stats.peak_queue = self.stats.peak_queue.max(self.queue.len());
+    }
+
+    /// Lowers a vertex's distance if `distance` is better; a vertex that may bend geodesics then
+    /// waits in the queue to act as a pseudo-source.
+    pub(crate) fn improve_vertex(&mut self, v: VertexId, distance: S, source: usize) {
+        let slot = &mut self.vertices[v.index()];
+        match slot {
+            Some(known) if distance.compare_distance(&known.distance) != Ordering::Less => return,
+            Some(_) => {}
+            None => self.reached += 1,
+        }
+        let approx = distance.to_f64();
+        *slot = Some(VertexDistance {
+            distance,
+            approx,
+            source,
+        });
+        if self.mesh.may_bend_geodesics(v) {
+            self.queue.push(Event {
+                key: approx,
+                kind: EventKind::Vertex(v),
+            });
+        }
+    }
+
+    /// The initial wedges of a source [SSK+05 §4]: on every edge of every face containing it.
+    fn emit_source(&mut self, k: usize, point: &SurfacePoint) {
+        let source = PseudoSource::Source(k);
+        match *point {
+            SurfacePoint::Vertex(v) => {
+                self.improve_vertex(v, S::zero(), k);
+                self.emit_from_vertex(v, S::zero(), source, k);
+            }
+            SurfacePoint::Edge { edge, t } => {
+                let length = self.unfolding.length(edge).clone();
+                let on_edge = Planar {
+                    x: S::from_f64(t) * &length,
+                    y: S::zero(),
+                };
+                self.add_wedge(edge, on_edge, Side::First, S::zero(), source, k);
+                let p = position_in_space::<S>(self.mesh, point);
+                for f in self.mesh.edge(edge).faces.into_iter().flatten() {
+                    for g in self.mesh.face_edges(f) {
+                        if g != edge {
+                            self.emit_from_point(&p, f, g, source, k);
+                        }
+                    }
+                }
+            }
+            SurfacePoint::Face { face, .. } => {
+                let p = position_in_space::<S>(self.mesh, point);
+                for g in self.mesh.face_edges(face) {
+                    self.emit_from_point(&p, face, g, source, k);
+                }
+            }
+        }
+    }
+
+    fn emit_from_point(
+        &mut self,
+        p: &[S; 3],
+        face: crate::mesh::FaceId,
+        g: EdgeId,
+        source: PseudoSource,
+        k: usize,
+    ) {
+        let edge = self.mesh.edge(g);
+        let side = edge.side_of(face).expect("edge of the face");
+        let at = planar_coordinates(
+            p,
+            self.mesh.position(edge.vertices[0]),
+            self.mesh.position(edge.vertices[1]),
+            self.unfolding.length(g),
+        );
+        self.add_wedge(g, at, Side::from_index(side), S::zero(), source, k);
+    }
+
+    /// The wedges of a vertex acting as a (pseudo-)source [MMP87, SSK+05 §4]: across the edge
+    /// opposite it in each incident face, and along each incident edge.
+    fn emit_from_vertex(&mut self, v: VertexId, sigma: S, source: PseudoSource, k: usize) {
+        let mesh = self.mesh;
+        for &f in mesh.vertex_faces(v) {
+            let corner = mesh.face(f).iter().position(|&c| c == v).expect("corner");
+            let g = mesh.face_edges(f)[(corner + 1) % 3];
+            let side = mesh.edge(g).side_of(f).expect("edge of the face");
+            let (x, y) = self.unfolding.apex(g, side).expect("face on that side").clone();
+            self.add_wedge(g, Planar { x, y }, Side::from_index(side), sigma.clone(), source, k);
+        }
+        for &g in mesh.vertex_edges(v) {
+            let x = if mesh.edge(g).vertices[0] == v {
+                S::zero()
+            } else {
+                self.unfolding.length(g).clone()
+            };
+            let at = Planar { x, y: S::zero() };
+            self.add_wedge(g, at, Side::First, sigma.clone(), source, k);
+        }
+    }
+
+    /// Adds a wedge covering the whole edge `g`.
+    fn add_wedge(&mut self, g: EdgeId, at: Planar<S>, tau: Side, sigma: S, source: PseudoSource, k: usize) {
+        let wedge = Wedge {
+            edge: g,
+            b0: S::zero(),
+            b1: self.unfolding.length(g).clone(),
+            source_x: at.x,
+            source_y: at.y,
+            sigma,
+            tau,
+            pseudo_source: source,
+            source: k,
+        };
+        self.insert(wedge);
+    }
+
+    /// Propagates a wedge across the face on the far side of its edge [SSK+05 §4.1, LZT Fig. 2c]:
+    /// the rays from the pseudo-source through `b0` and `b1` cut the face's two other edges, and
+    /// the pieces between them become new wedges with the same pseudo-source.
+    fn propagate_wedge(&mut self, w: &Wedge<S>) {
+        if w.source_y.sign() == Sign::Zero {
+            return; // A wedge along its edge's line sees nothing beyond the line.
+        }
+        let mesh = self.mesh;
+        let Some(layout) = FaceLayout::new(mesh, &self.unfolding, w.edge, w.tau.opposite().index())
+        else {
+            return;
+        };
+        let face = layout.wing.face;
+        let s = w.source_point();
+        let shadow = layout.apex_shadow(&s);
+        let length = layout.length;
+        let apex = S::within(&shadow, &w.b0, &w.b1, length)
+            .then(|| (layout.apex_vertex(), layout.apex_distance(&s) + &w.sigma));
+        let zero = S::zero();
+        let one = S::from_f64(1.0);
+        let clamp = |t: S| S::max_of(&zero, &S::min_of(&one, &t));
+        let mut children: [Option<(EdgeId, S, S, Planar<S>)>; 2] = [None, None];
+        if w.b0.compare(&shadow) == Ordering::Less {
+            let t0 = clamp(layout.near_hit(&s, &w.b0));
+            let t1 = if w.b1.compare(&shadow) == Ordering::Less {
+                clamp(layout.near_hit(&s, &w.b1))
+            } else {
+                one.clone()
+            };
+            let (p0, p1) = (layout.near_position(&t0), layout.near_position(&t1));
+            children[0] = Some((layout.wing.near, p0, p1, layout.to_near(&s)));
+        }
+        if w.b1.compare(&shadow) == Ordering::Greater {
+            let u0 = if w.b0.compare(&shadow) == Ordering::Greater {
+                clamp(layout.far_hit(&s, &w.b0))
+            } else {
+                zero.clone()
+            };
+            let u1 = clamp(layout.far_hit(&s, &w.b1));
+            let (p0, p1) = (layout.far_position(&u0), layout.far_position(&u1));
+            children[1] = Some((layout.wing.far, p0, p1, layout.to_far(&s)));
+        }
+        if let Some((v, d)) = apex {
+            self.improve_vertex(v, d, w.source);
+        }
+        for (g, p0, p1, at) in children.into_iter().flatten() {
+            let (b0, b1) = if p0.compare(&p1) == Ordering::Greater {
+                (p1, p0)
+            } else {
+                (p0, p1)
+            };
+            let tau = Side::from_index(mesh.edge(g).side_of(face).expect("edge of the face"));
+            let child = Wedge {
+                edge: g,
+                b0,
+                b1,
+                source_x: at.x,
+                source_y: at.y,
+                sigma: w.sigma.clone(),
+                tau,
+                pseudo_source: w.pseudo_source,
+                source: w.source,
+            };
+            if self.is_dominated_by_vertices(&child) {
+                self.stats.wedges_filtered += 1;
+            } else {
+                self.insert(child);
+            }
+        }
+    }
+
+    /// Whether an end vertex of the wedge's edge reaches the whole range more cheaply [SSK+05
+    /// §4.2]: along the edge, `d(v0) + t` grows at slope 1, at least as fast as the wedge's
+    /// distance, so beating it at `b1` beats it everywhere (and symmetrically for `v1` at `b0`).
+    fn is_dominated_by_vertices(&self, w: &Wedge<S>) -> bool {
+        if w.min_distance().to_f64() > self.max_distance {
+            return true;
+        }
+        let [v0, v1] = self.mesh.edge(w.edge).vertices;
+        let d = w.distance_function();
+        if let Some(known) = &self.vertices[v0.index()] {
+            let via = known.distance.clone() + &w.b1;
+            if via.compare_distance(&d.at(&w.b1)) == Ordering::Less {
+                return true;
+            }
+        }
+        if let Some(known) = &self.vertices[v1.index()] {
+            let via = known.distance.clone() + &(self.unfolding.length(w.edge).clone() - &w.b0);
+            if via.compare_distance(&d.at(&w.b0)) == Ordering::Less {
+                return true;
+            }
+        }
+        false
+    }
+}

@@ -1,0 +1,150 @@
+//! Reading distances at any surface point from the final wedges [LZT §2, step (1)]: the point
+//! lies in the region of the wedge (on one of its face's edges) whose pseudo-source sees it
+//! through the wedge's range and gives the smallest distance.
+
+use super::field::GeodesicField;
+use super::source::{PointError, SurfacePoint};
+use super::unfold::{planar_coordinates, position_in_space, Planar};
+use crate::mesh::{EdgeId, FaceId, VertexId};
+use crate::scalar::{Scalar, Sign};
+use std::cmp::Ordering;
+
+/// How the best path reaches a point.
+#[derive(Clone, Debug)]
+pub(crate) enum Via<S> {
+    /// Straight from the pseudo-source of `wedge` on `edge`, seen from `face`, where the point
+    /// has coordinates `at` in the edge's frame (y >= 0 towards `face`).
+    Wedge {
+        edge: EdgeId,
+        wedge: usize,
+        face: FaceId,
+        at: Planar<S>,
+    },
+    /// Straight from a vertex of the face (or the point is that vertex).
+    Vertex(VertexId),
+}
+
+#[derive(Clone, Debug)]
+pub(crate) struct Best<S> {
+    pub(crate) distance: S,
+    pub(crate) via: Via<S>,
+}
+
+fn keep_better<S: Scalar>(best: &mut Option<Best<S>>, candidate: Best<S>) {
+    let better = match best {
+        None => true,
+        Some(b) => candidate.distance.compare_distance(&b.distance) == Ordering::Less,
+    };
+    if better {
+        *best = Some(candidate);
+    }
+}
+
+impl<S: Scalar> GeodesicField<'_, S> {
+    /// The geodesic distance from the nearest source to any surface point; `f64::INFINITY` if
+    /// it cannot be reached.
+    ///
+    /// # Errors
+    /// [`PointError`] if the point is not a point of the mesh.
+    pub fn distance_at(&self, point: &SurfacePoint) -> Result<f64, PointError> {
+        let point = point.validated(self.mesh)?;
+        Ok(self
+            .best_at(&point)
+            .map_or(f64::INFINITY, |b| b.distance.to_f64()))
+    }
+
+    /// The best way to reach a point in canonical form.
+    pub(crate) fn best_at(&self, point: &SurfacePoint) -> Option<Best<S>> {
+        if let SurfacePoint::Vertex(v) = *point {
+            return self.vertices[v.index()].as_ref().map(|d| Best {
+                distance: d.distance.clone(),
+                via: Via::Vertex(v),
+            });
+        }
+        let p = position_in_space::<S>(self.mesh, point);
+        let mut best = None;
+        for face in point.faces(self.mesh) {
+            for edge in self.mesh.face_edges(face) {
+                let e = self.mesh.edge(edge);
+                let at = planar_coordinates(
+                    &p,
+                    self.mesh.position(e.vertices[0]),
+                    self.mesh.position(e.vertices[1]),
+                    self.unfolding.length(edge),
+                );
+                if let Some(found) = self.best_through_edge(edge, face, &at) {
+                    keep_better(&mut best, found);
+                }
+            }
+            for v in self.mesh.face(face) {
+                if let Some(d) = &self.vertices[v.index()] {
+                    let q = self.mesh.position(v).map(S::from_f64);
+                    let gap = [0, 1, 2].map(|i| q[i].clone() - &p[i]);
+                    let len = (gap[0].clone() * &gap[0] + gap[1].clone() * &gap[1] + gap[2].clone() * &gap[2]).sqrt();
+                    keep_better(
+                        &mut best,
+                        Best {
+                            distance: d.distance.clone() + &len,
+                            via: Via::Vertex(v),
+                        },
+                    );
+                }
+            }
+        }
+        best
+    }
+
+    /// The best wedge on `edge` whose pseudo-source sees the point `at` (in the edge's frame,
+    /// y >= 0 towards `face`) through the wedge's range.
+    pub(crate) fn best_through_edge(&self, edge: EdgeId, face: FaceId, at: &Planar<S>) -> Option<Best<S>> {
+        let side = self.mesh.edge(edge).side_of(face)?;
+        let length = self.unfolding.length(edge);
+        let mut best = None;
+        for (i, w) in self.wedges[edge.index()].iter().enumerate() {
+            let on_line = at.y.sign() == Sign::Zero;
+            let same_side = w.tau.index() == side;
+            let crossing = if w.source_y.sign() == Sign::Zero {
+                // A wedge along the edge's line reaches only points of the edge.
+                if !on_line {
+                    continue;
+                }
+                at.x.clone()
+            } else if on_line {
+                at.x.clone()
+            } else if same_side {
+                // The point must lie between the pseudo-source and the edge.
+                if at.y.compare(&w.source_y) != Ordering::Less {
+                    continue;
+                }
+                let depth = w.source_y.clone() - &at.y;
+                w.source_x.clone() + (at.x.clone() - &w.source_x) * &w.source_y / depth
+            } else {
+                let depth = w.source_y.clone() + &at.y;
+                w.source_x.clone() + (at.x.clone() - &w.source_x) * &w.source_y / depth
+            };
+            if !S::within(&crossing, &w.b0, &w.b1, length) {
+                continue;
+            }
+            let dx = at.x.clone() - &w.source_x;
+            let dy = if same_side {
+                at.y.clone() - &w.source_y
+            } else {
+                at.y.clone() + &w.source_y
+            };
+            let distance = (dx.clone() * dx + dy.clone() * dy).sqrt() + &w.sigma;
+            keep_better(
+                &mut best,
+                Best {
+                    distance,
+                    via: Via::Wedge {
+                        edge,
+                        wedge: i,
+                        face,
+                        at: at.clone(),
+                    },
+                },
+            );
+        }
+        best
+    }
+}

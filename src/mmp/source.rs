@@ -1,0 +1,192 @@
+//! Points on the surface: sources, targets and the points of a traced path.
+
+use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
+use serde::Serialize;
+use thiserror::Error;
+
+/// A point on the mesh surface, named by the simplex that contains it.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub enum SurfacePoint {
+    /// A mesh vertex.
+    Vertex(VertexId),
+    /// The point at fraction `t` from the edge's `vertices[0]` to its `vertices[1]`.
+    Edge {
+        /// The edge.
+        edge: EdgeId,
+        /// Fraction along the edge, in `[0, 1]`.
+        t: f64,
+    },
+    /// A point of a face, by barycentric coordinates of its three corners (in face order).
+    Face {
+        /// The face.
+        face: FaceId,
+        /// Barycentric coordinates: non-negative, summing to one.
+        bary: [f64; 3],
+    },
+}
+
+/// Why a surface point is not a point of the mesh.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum PointError {
+    /// The vertex does not exist.
+    #[error("vertex {vertex} is out of range: the mesh has {count} vertices")]
+    VertexOutOfRange {
+        /// The vertex asked for.
+        vertex: u32,
+        /// How many vertices the mesh has.
+        count: usize,
+    },
+    /// The face does not exist.
+    #[error("face {face} is out of range: the mesh has {count} faces")]
+    FaceOutOfRange {
+        /// The face asked for.
+        face: u32,
+        /// How many faces the mesh has.
+        count: usize,
+    },
+    /// The edge does not exist.
+    #[error("edge {edge} is out of range: the mesh has {count} edges")]
+    EdgeOutOfRange {
+        /// The edge asked for.
+        edge: u32,
+        /// How many edges the mesh has.
+        count: usize,
+    },
+    /// Two vertices are not joined by an edge.
+    #[error("vertices {a} and {b} are not joined by an edge")]
+    NoSuchEdge {
+        /// One vertex.
+        a: u32,
+        /// The other.
+        b: u32,
+    },
+    /// An edge parameter outside `[0, 1]` or not finite.
+    #[error("edge parameter {t} is not in [0, 1]")]
+    EdgeParameter {
+        /// The parameter given.
+        t: f64,
+    },
+    /// Barycentric coordinates that are negative, not finite, or sum to zero.
+    #[error("barycentric coordinates {bary:?} must be finite, non-negative and not all zero")]
+    Barycentric {
+        /// The coordinates given.
+        bary: [f64; 3],
+    },
+    /// No sources were given.
+    #[error("at least one source is needed")]
+    NoSource,
+}
+
+impl SurfacePoint {
+    /// The point at fraction `t` from vertex `a` to vertex `b` along their common edge.
+    ///
+    /// # Errors
+    /// [`PointError`] if a vertex is out of range, the vertices share no edge, or `t` is not in
+    /// `[0, 1]`.
+    pub fn on_edge(mesh: &TriMesh, a: u32, b: u32, t: f64) -> Result<SurfacePoint, PointError> {
+        for v in [a, b] {
+            if v as usize >= mesh.vertex_count() {
+                return Err(PointError::VertexOutOfRange {
+                    vertex: v,
+                    count: mesh.vertex_count(),
+                });
+            }
+        }
+        if !(0.0..=1.0).contains(&t) {
+            return Err(PointError::EdgeParameter { t });
+        }
+        let edge = mesh
+            .edge_between(VertexId(a), VertexId(b))
+            .ok_or(PointError::NoSuchEdge { a, b })?;
+        let t = if mesh.edge(edge).vertices[0] == VertexId(a) {
+            t
+        } else {
+            1.0 - t
+        };
+        Ok(SurfacePoint::Edge { edge, t })
+    }
+
+    /// Checks the point against the mesh and puts it in canonical form: barycentric coordinates
+    /// sum to one, and a point on a face's boundary or an edge's end is named by the smallest
+    /// simplex containing it (the engine relies on this to emit wedges into every face around it).
+    ///
+    /// # Errors
+    /// [`PointError`] for an element out of range or a parameter out of its domain.
+    pub fn validated(self, mesh: &TriMesh) -> Result<SurfacePoint, PointError> {
+        match self {
+            SurfacePoint::Vertex(v) if v.index() >= mesh.vertex_count() => {
+                Err(PointError::VertexOutOfRange {
+                    vertex: v.0,
+                    count: mesh.vertex_count(),
+                })
+            }
+            SurfacePoint::Edge { edge, .. } if edge.index() >= mesh.edge_count() => {
+                Err(PointError::EdgeOutOfRange {
+                    edge: edge.0,
+                    count: mesh.edge_count(),
+                })
+            }
+            SurfacePoint::Edge { t, .. } if !(0.0..=1.0).contains(&t) => {
+                Err(PointError::EdgeParameter { t })
+            }
+            SurfacePoint::Face { face, .. } if face.index() >= mesh.face_count() => {
+                Err(PointError::FaceOutOfRange {
+                    face: face.0,
+                    count: mesh.face_count(),
+                })
+            }
+            SurfacePoint::Face { face, bary } => {
+                let sum: f64 = bary.iter().sum();
+                if bary.iter().any(|b| !b.is_finite() || *b < 0.0) || !(sum > 0.0) {
+                    return Err(PointError::Barycentric { bary });
+                }
+                let bary = bary.map(|b| b / sum);
+                let corners = mesh.face(face);
+                let zeros: Vec<usize> = (0..3).filter(|&i| bary[i] == 0.0).collect();
+                Ok(match zeros[..] {
+                    [] => SurfacePoint::Face { face, bary },
+                    [i] => {
+                        let (a, b) = (corners[(i + 1) % 3], corners[(i + 2) % 3]);
+                        let edge = mesh.face_edges(face)[(i + 1) % 3];
+                        let t = bary[(i + 2) % 3];
+                        if mesh.edge(edge).vertices[0] == a {
+                            SurfacePoint::Edge { edge, t }
+                        } else {
+                            debug_assert_eq!(mesh.edge(edge).vertices[0], b);
+                            SurfacePoint::Edge { edge, t: 1.0 - t }
+                        }
+                    }
+                    _ => SurfacePoint::Vertex(corners[(0..3).find(|i| !zeros.contains(i)).expect("one corner is non-zero")]),
+                })
+            }
+            SurfacePoint::Edge { edge, t } if t == 0.0 || t == 1.0 => {
+                Ok(SurfacePoint::Vertex(mesh.edge(edge).vertices[usize::from(t == 1.0)]))
+            }
+            point => Ok(point),
+        }
+    }
+
+    /// The point's position in space.
+    pub fn position(&self, mesh: &TriMesh) -> [f64; 3] {
+        match *self {
+            SurfacePoint::Vertex(v) => mesh.position(v),
+            SurfacePoint::Edge { edge, t } => {
+                let [a, b] = mesh.edge(edge).vertices.map(|v| mesh.position(v));
+                [0, 1, 2].map(|i| a[i] + t * (b[i] - a[i]))
+            }
+            SurfacePoint::Face { face, bary } => {
+                let c = mesh.face(face).map(|v| mesh.position(v));
+                [0, 1, 2].map(|i| bary[0] * c[0][i] + bary[1] * c[1][i] + bary[2] * c[2][i])
+            }
+        }
+    }
+
+    /// The faces that contain the point (one, two, or a vertex's star).
+    pub fn faces<'m>(&self, mesh: &'m TriMesh) -> Vec<FaceId> {
+        match *self {
+            SurfacePoint::Vertex(v) => mesh.vertex_faces(v).to_vec(),
+            SurfacePoint::Edge { edge, .. } => mesh.edge(edge).faces.iter().flatten().copied().collect(),
+            SurfacePoint::Face { face, .. } => vec![face],
+        }
+    }
+}

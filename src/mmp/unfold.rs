@@ -1,0 +1,255 @@
+//! Unfolding: the planar frames of edges and the maps between them [SSK+05 §3].
+//!
+//! Each edge has a frame: x runs along the edge from `vertices[0]`, y is the distance from the
+//! edge's line. A face on one side of an edge is laid out with its apex at `(apex_x, -apex_h)`:
+//! below the line, as seen by a wedge whose pseudo-source is above it. The maps here carry a
+//! point from an edge's frame into the frames of the face's two other edges.
+
+use super::source::SurfacePoint;
+use crate::mesh::{EdgeId, TriMesh, VertexId, Wing};
+use crate::scalar::Scalar;
+
+/// A point in an edge's frame.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Planar<S> {
+    /// Position along the edge, from its `vertices[0]`.
+    pub x: S,
+    /// Signed distance from the edge's line.
+    pub y: S,
+}
+
+/// Per-run geometry in the backend's number type: edge lengths and, for each side of each edge,
+/// the apex of the face there. Computed once per propagation so that every wedge reuses the same
+/// values (for exact backends: the same radicals).
+pub(crate) struct Unfolding<S> {
+    edge_length: Vec<S>,
+    /// `apex[2 e + side]`: `(x, h)` of the apex of the face on `side` of edge `e`, `h >= 0`.
+    apex: Vec<Option<(S, S)>>,
+}
+
+fn diff<S: Scalar>(p: [f64; 3], q: [f64; 3]) -> [S; 3] {
+    [0, 1, 2].map(|i| S::from_f64(p[i]) - S::from_f64(q[i]))
+}
+
+fn dot<S: Scalar>(a: &[S; 3], b: &[S; 3]) -> S {
+    a[0].clone() * &b[0] + a[1].clone() * &b[1] + a[2].clone() * &b[2]
+}
+
+/// The coordinates of point `p` in the frame of the edge from `v0` to `v1` of length `length`:
+/// `x` along the edge, `y >= 0` its distance from the line.
+pub(crate) fn planar_coordinates<S: Scalar>(
+    p: &[S; 3],
+    v0: [f64; 3],
+    v1: [f64; 3],
+    length: &S,
+) -> Planar<S> {
+    let u = diff::<S>(v1, v0);
+    let w = [0, 1, 2].map(|i| p[i].clone() - S::from_f64(v0[i]));
+    let along = dot(&u, &w);
+    let cross = [
+        u[1].clone() * &w[2] - u[2].clone() * &w[1],
+        u[2].clone() * &w[0] - u[0].clone() * &w[2],
+        u[0].clone() * &w[1] - u[1].clone() * &w[0],
+    ];
+    Planar {
+        x: along / length,
+        y: dot(&cross, &cross).sqrt() / length,
+    }
+}
+
+/// A surface point's coordinates in space, in the backend's number type.
+pub(crate) fn position_in_space<S: Scalar>(mesh: &TriMesh, point: &SurfacePoint) -> [S; 3] {
+    let p = |v: VertexId| mesh.position(v).map(S::from_f64);
+    match *point {
+        SurfacePoint::Vertex(v) => p(v),
+        SurfacePoint::Edge { edge, t } => {
+            let [a, b] = mesh.edge(edge).vertices.map(p);
+            let t = S::from_f64(t);
+            [0, 1, 2].map(|i| a[i].clone() + (b[i].clone() - &a[i]) * &t)
+        }
+        SurfacePoint::Face { face, bary } => {
+            let c = mesh.face(face).map(p);
+            let w = bary.map(S::from_f64);
+            [0, 1, 2].map(|i| c[0][i].clone() * &w[0] + c[1][i].clone() * &w[1] + c[2][i].clone() * &w[2])
+        }
+    }
+}
+
+impl<S: Scalar> Unfolding<S> {
+    pub(crate) fn new(mesh: &TriMesh) -> Self {
+        let edge_length: Vec<S> = mesh
+            .edges()
+            .iter()
+            .map(|e| {
+                let d = diff::<S>(mesh.position(e.vertices[1]), mesh.position(e.vertices[0]));
+                dot(&d, &d).sqrt()
+            })
+            .collect();
+        let mut apex = Vec::with_capacity(2 * mesh.edge_count());
+        for (i, e) in mesh.edges().iter().enumerate() {
+            for side in 0..2 {
+                apex.push(mesh.wing(EdgeId(i as u32), side).map(|wing| {
+                    let p = planar_coordinates(
+                        &mesh.position(wing.apex).map(S::from_f64),
+                        mesh.position(e.vertices[0]),
+                        mesh.position(e.vertices[1]),
+                        &edge_length[i],
+                    );
+                    (p.x, p.y)
+                }));
+            }
+        }
+        Unfolding { edge_length, apex }
+    }
+
+    #[inline]
+    pub(crate) fn length(&self, e: EdgeId) -> &S {
+        &self.edge_length[e.index()]
+    }
+
+    /// `(x, h)` of the apex of the face on `side` of `e`.
+    #[inline]
+    pub(crate) fn apex(&self, e: EdgeId, side: usize) -> Option<&(S, S)> {
+        self.apex[2 * e.index() + side].as_ref()
+    }
+}
+
+/// A face laid out below an edge's line, ready to carry points into its other two edges' frames.
+pub(crate) struct FaceLayout<'a, S> {
+    /// The face and its other edges.
+    pub wing: &'a Wing,
+    /// Length of the edge the layout hangs from.
+    pub length: &'a S,
+    /// Apex position along the edge.
+    pub apex_x: &'a S,
+    /// Apex depth below the edge's line.
+    pub apex_h: &'a S,
+    /// Length of the edge from the edge's `vertices[0]` to the apex.
+    pub near_length: &'a S,
+    /// Length of the edge from the apex to the edge's `vertices[1]`.
+    pub far_length: &'a S,
+    /// Whether the near edge runs from the apex (its frame's x is measured from the apex).
+    pub near_reversed: bool,
+    /// Whether the far edge runs towards the apex.
+    pub far_reversed: bool,
+}
+
+impl<'a, S: Scalar> FaceLayout<'a, S> {
+    /// The layout of the face on `side` of `e`, if there is one.
+    #[inline]
+    pub(crate) fn new(
+        mesh: &'a TriMesh,
+        unfolding: &'a Unfolding<S>,
+        e: EdgeId,
+        side: usize,
+    ) -> Option<Self> {
+        let wing = mesh.wing(e, side)?;
+        let (apex_x, apex_h) = unfolding.apex(e, side)?;
+        Some(FaceLayout {
+            wing,
+            length: unfolding.length(e),
+            apex_x,
+            apex_h,
+            near_length: unfolding.length(wing.near),
+            far_length: unfolding.length(wing.far),
+            near_reversed: mesh.edge(wing.near).vertices[0] == wing.apex,
+            far_reversed: mesh.edge(wing.far).vertices[0] != wing.apex,
+        })
+    }
+
+    /// The apex vertex.
+    #[inline]
+    pub(crate) fn apex_vertex(&self) -> VertexId {
+        self.wing.apex
+    }
+
+    /// Where the line through `s` and `(b, 0)` meets the near edge, as a fraction from the
+    /// edge's `vertices[0]` towards the apex (not clamped).
+    #[inline]
+    pub(crate) fn near_hit(&self, s: &Planar<S>, b: &S) -> S {
+        // Solve cross(d, t C - s) = 0 with d = (b - sx, -sy), C = (cx, -h).
+        let dx = b.clone() - &s.x;
+        let num = b.clone() * &s.y;
+        let den = s.y.clone() * self.apex_x - dx * self.apex_h;
+        num / den
+    }
+
+    /// Where the line through `s` and `(b, 0)` meets the far edge, as a fraction from the apex
+    /// towards the edge's `vertices[1]` (not clamped).
+    #[inline]
+    pub(crate) fn far_hit(&self, s: &Planar<S>, b: &S) -> S {
+        let dx = b.clone() - &s.x;
+        let num = dx.clone() * &(s.y.clone() + self.apex_h) + s.y.clone() * &(s.x.clone() - self.apex_x);
+        let den = dx * self.apex_h + s.y.clone() * &(self.length.clone() - self.apex_x);
+        num / den
+    }
+
+    /// Where the line from `s` through the apex meets the edge's line: rays through points left of
+    /// it leave the face by the near edge, rays right of it by the far edge.
+    #[inline]
+    pub(crate) fn apex_shadow(&self, s: &Planar<S>) -> S {
+        let depth = s.y.clone() + self.apex_h;
+        s.x.clone() + (self.apex_x.clone() - &s.x) * &s.y / depth
+    }
+
+    /// Squared distance from `s` to the apex.
+    #[inline]
+    pub(crate) fn apex_distance(&self, s: &Planar<S>) -> S {
+        let dx = self.apex_x.clone() - &s.x;
+        let dy = s.y.clone() + self.apex_h;
+        (dx.clone() * dx + dy.clone() * dy).sqrt()
+    }
+
+    /// `s` in the near edge's frame, y positive towards this face.
+    #[inline]
+    pub(crate) fn to_near(&self, s: &Planar<S>) -> Planar<S> {
+        let a = self.near_length;
+        let x = (s.x.clone() * self.apex_x - s.y.clone() * self.apex_h) / a;
+        let y = (self.apex_x.clone() * &s.y + self.apex_h.clone() * &s.x) / a;
+        if self.near_reversed {
+            Planar { x: a.clone() - x, y }
+        } else {
+            Planar { x, y }
+        }
+    }
+
+    /// `s` in the far edge's frame, y positive towards this face.
+    #[inline]
+    pub(crate) fn to_far(&self, s: &Planar<S>) -> Planar<S> {
+        let b = self.far_length;
+        let ux = self.length.clone() - self.apex_x;
+        let sx = s.x.clone() - self.apex_x;
+        let sy = s.y.clone() + self.apex_h;
+        let x = (sx.clone() * &ux + sy.clone() * self.apex_h) / b;
+        let y = (ux * &sy - self.apex_h.clone() * &sx) / b;
+        if self.far_reversed {
+            Planar { x: b.clone() - x, y }
+        } else {
+            Planar { x, y }
+        }
+    }
+
+    /// A fraction `t` along the near edge (from the edge's `vertices[0]` to the apex) as a
+    /// position in the near edge's frame.
+    #[inline]
+    pub(crate) fn near_position(&self, t: &S) -> S {
+        let x = t.clone() * self.near_length;
+        if self.near_reversed {
+            self.near_length.clone() - x
+        } else {
+            x
+        }
+    }
+
+    /// A fraction `u` along the far edge (from the apex to the edge's `vertices[1]`) as a
+    /// position in the far edge's frame.
+    #[inline]
+    pub(crate) fn far_position(&self, u: &S) -> S {
+        let x = u.clone() * self.far_length;
+        if self.far_reversed {
+            self.far_length.clone() - x
+        } else {
+            x
+        }
+    }
+}

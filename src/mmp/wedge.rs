@@ -1,0 +1,125 @@
+//! The wedge (Surazhsky's "window") of Definition 1 [LZT §2].
+
+use super::unfold::Planar;
+use crate::mesh::{EdgeId, VertexId};
+use crate::scalar::{Scalar, SourceDistance};
+use serde::Serialize;
+
+/// Which side of an edge a wedge's pseudo-source lies on (tau in Definition 1 [LZT §2]).
+///
+/// `First` and `Second` name the edge's [`faces`](crate::mesh::Edge::faces)`[0]` and `[1]`. A wedge
+/// lying along its edge (pseudo-source on the edge's line) is on the `First` side by convention.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum Side {
+    /// The side of the edge's first face.
+    First,
+    /// The side of the edge's second face.
+    Second,
+}
+
+impl Side {
+    /// 0 for `First`, 1 for `Second`.
+    #[inline]
+    pub fn index(self) -> usize {
+        self as usize
+    }
+
+    /// The side with the given index (0 or 1).
+    #[inline]
+    pub fn from_index(i: usize) -> Side {
+        if i == 0 {
+            Side::First
+        } else {
+            Side::Second
+        }
+    }
+
+    /// The other side.
+    #[inline]
+    pub fn opposite(self) -> Side {
+        match self {
+            Side::First => Side::Second,
+            Side::Second => Side::First,
+        }
+    }
+}
+
+/// Where a wedge's geodesics come from: a source itself, or a mesh vertex that acts as a
+/// pseudo-source (a saddle or boundary vertex [MMP87]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum PseudoSource {
+    /// The source with this index in the list passed to the propagation.
+    Source(usize),
+    /// A mesh vertex.
+    Vertex(VertexId),
+}
+
+/// A wedge on an edge: the 6-tuple `(b0, b1, d0, d1, sigma, tau)` of Definition 1 [LZT §2],
+/// plus the identity of its pseudo-source and of the source it leads back to.
+///
+/// The pseudo-source is stored as its unfolded position `(source_x, source_y)` in the edge's
+/// frame rather than as `(d0, d1)`; both distances follow from it ([`Wedge::d0`], [`Wedge::d1`]),
+/// and keeping the position avoids re-deriving it (which exact backends would pay for).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Wedge<S> {
+    /// The edge the wedge lies on.
+    pub edge: EdgeId,
+    /// Start of the wedge's range, measured from the edge's `vertices[0]`.
+    pub b0: S,
+    /// End of the wedge's range (`b0 < b1`).
+    pub b1: S,
+    /// The pseudo-source's position along the edge.
+    pub source_x: S,
+    /// The pseudo-source's distance from the edge's line (`>= 0`, on side `tau`).
+    pub source_y: S,
+    /// Geodesic distance from the pseudo-source to the source.
+    pub sigma: S,
+    /// The side of the edge the pseudo-source lies on.
+    pub tau: Side,
+    /// The pseudo-source.
+    pub pseudo_source: PseudoSource,
+    /// Index of the source the wedge's geodesics lead back to.
+    pub source: usize,
+}
+
+impl<S: Scalar> Wedge<S> {
+    /// Distance from the pseudo-source to the point `b0` of the edge.
+    pub fn d0(&self) -> S {
+        self.distance_function().at(&self.b0) - &self.sigma
+    }
+
+    /// Distance from the pseudo-source to the point `b1` of the edge.
+    pub fn d1(&self) -> S {
+        self.distance_function().at(&self.b1) - &self.sigma
+    }
+
+    /// The geodesic distance this wedge gives along its edge, `D(t) = sigma + |s - t|`.
+    #[inline]
+    pub fn distance_function(&self) -> SourceDistance<S> {
+        SourceDistance {
+            x: self.source_x.clone(),
+            y: self.source_y.clone(),
+            sigma: self.sigma.clone(),
+        }
+    }
+
+    /// The unfolded pseudo-source in the edge's frame (y >= 0 on side tau).
+    #[inline]
+    pub(crate) fn source_point(&self) -> Planar<S> {
+        Planar {
+            x: self.source_x.clone(),
+            y: self.source_y.clone(),
+        }
+    }
+
+    /// The smallest distance the wedge gives on its range (its priority [SSK+05 §4]).
+    pub fn min_distance(&self) -> S {
+        let inside = self.source_x.compare(&self.b0).is_ge() && self.source_x.compare(&self.b1).is_le();
+        if inside {
+            self.sigma.clone() + &self.source_y
+        } else {
+            let d = self.distance_function();
+            S::min_of(&d.at(&self.b0), &d.at(&self.b1))
+        }
+    }
+}

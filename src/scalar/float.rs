@@ -1,0 +1,235 @@
+//! The `f64` backend: hardware floating point with one documented tolerance policy.
+//!
+//! Every tolerance the f64 engine uses is a constant of [`FloatTolerance`]; the engine itself
+//! contains no epsilon. All tolerances are relative to a length of the edge at hand, so results
+//! do not depend on the scale of the model (compare Observation 3 [LZT §6]).
+
+use super::{BisectorRoots, Eq2Coefficients, Scalar, Sign, SourceDistance};
+use std::cmp::Ordering;
+
+/// The f64 backend's tolerance policy, one constant per kind of decision.
+pub struct FloatTolerance;
+
+impl FloatTolerance {
+    /// Two distances closer than this (relative) are a tie, and a tie keeps the wedge already on
+    /// the edge. Chosen well above the rounding error of `sigma + sqrt(..)` chains of a few
+    /// hundred faces (~1e-14) and well below the 1e-9 agreement we promise.
+    pub const DISTANCE: f64 = 1e-12;
+    /// Wedges shorter than this fraction of their edge are dropped: their rays are numerically
+    /// parallel and they cannot carry a distance their neighbours do not.
+    pub const EXTENT: f64 = 1e-11;
+    /// Slack, as a fraction of the edge length, when asking whether a point lies in a wedge's
+    /// range; covers the rounding of unfolded coordinates.
+    pub const WITHIN: f64 = 1e-9;
+    /// Two wedges whose pseudo-sources and sigmas agree to this fraction of the range's scale
+    /// have the same distance function: eq. (2) has infinitely many solutions.
+    pub const SAME_SOURCE: f64 = 1e-12;
+    /// A root of eq. (2) solves eq. (1) if the two distances there agree to this fraction.
+    pub const ROOT_RESIDUAL: f64 = 1e-9;
+}
+
+impl Scalar for f64 {
+    #[inline(always)]
+    fn from_f64(x: f64) -> Self {
+        x
+    }
+
+    #[inline(always)]
+    fn to_f64(&self) -> f64 {
+        *self
+    }
+
+    #[inline(always)]
+    fn sqrt(&self) -> Self {
+        self.max(0.0).sqrt()
+    }
+
+    #[inline(always)]
+    fn sign(&self) -> Sign {
+        if *self > 0.0 {
+            Sign::Positive
+        } else if *self < 0.0 {
+            Sign::Negative
+        } else {
+            Sign::Zero
+        }
+    }
+
+    #[inline(always)]
+    fn compare(&self, other: &Self) -> Ordering {
+        self.total_cmp(other)
+    }
+
+    #[inline(always)]
+    fn compare_distance(&self, other: &Self) -> Ordering {
+        let tie = FloatTolerance::DISTANCE * self.abs().max(other.abs());
+        if *self < *other - tie {
+            Ordering::Less
+        } else if *self > *other + tie {
+            Ordering::Greater
+        } else {
+            Ordering::Equal
+        }
+    }
+
+    #[inline(always)]
+    fn has_extent(lo: &Self, hi: &Self, scale: &Self) -> bool {
+        hi - lo > FloatTolerance::EXTENT * scale
+    }
+
+    #[inline(always)]
+    fn within(x: &Self, lo: &Self, hi: &Self, scale: &Self) -> bool {
+        let slack = FloatTolerance::WITHIN * scale;
+        *x >= lo - slack && *x <= hi + slack
+    }
+
+    fn bisector_roots(
+        a: &SourceDistance<f64>,
+        b: &SourceDistance<f64>,
+        lo: &f64,
+        hi: &f64,
+    ) -> BisectorRoots<f64> {
+        let (lo, hi) = (*lo, *hi);
+        let scale = (hi - lo)
+            .max(a.y.abs())
+            .max(b.y.abs())
+            .max((a.x - lo).abs())
+            .max((b.x - lo).abs());
+        let same = FloatTolerance::SAME_SOURCE * scale;
+        if (a.x - b.x).abs() <= same
+            && (a.sigma - b.sigma).abs() <= same
+            && (a.y.abs() - b.y.abs()).abs() <= same
+        {
+            return BisectorRoots::Infinite;
+        }
+        let f = |t: f64| a.at(&t) - b.at(&t);
+        let solves_eq1 =
+            |t: f64| f(t).abs() <= FloatTolerance::ROOT_RESIDUAL * a.at(&t).max(b.at(&t));
+        let eq2 = Eq2Coefficients::new(a, b, &lo);
+        let mut roots: Vec<f64> = quadratic_roots(eq2.a, eq2.b, eq2.c, hi - lo)
+            .into_iter()
+            .map(|t| t + lo)
+            .filter(|&t| t > lo && t < hi && solves_eq1(t))
+            .collect();
+        roots.dedup_by(|x, y| (*x - *y).abs() <= FloatTolerance::EXTENT * scale);
+        // Eq. (2) is ill-conditioned when the pseudo-sources nearly coincide; a sign change of
+        // eq. (1) across the range proves a crossing, so find it directly if eq. (2) missed it.
+        let (f_lo, f_hi) = (f(lo), f(hi));
+        if roots.len() % 2 == 0 && f_lo * f_hi < 0.0 {
+            roots = vec![bisect(f, lo, hi, f_lo)];
+        }
+        match roots[..] {
+            [] => BisectorRoots::None,
+            [r] => BisectorRoots::One(r),
+            [r, s] => BisectorRoots::Two(r, s),
+            _ => unreachable!("a quadratic has at most two roots"),
+        }
+    }
+}
+
+/// Real roots of `a t^2 + b t + c` in increasing order, computed without cancellation; `width`
+/// is the length of the range of interest, which tells when `a` (or `b`) is negligible.
+fn quadratic_roots(a: f64, b: f64, c: f64, width: f64) -> Vec<f64> {
+    let linear_size = b.abs() * width + c.abs();
+    if a.abs() * width * width <= f64::EPSILON * linear_size {
+        if b.abs() * width <= f64::EPSILON * c.abs() || b == 0.0 {
+            return Vec::new();
+        }
+        return vec![-c / b];
+    }
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 {
+        // A tangency rounded to a negative discriminant still touches zero at the vertex.
+        if disc >= -8.0 * f64::EPSILON * (b * b).max((4.0 * a * c).abs()) {
+            return vec![-b / (2.0 * a)];
+        }
+        return Vec::new();
+    }
+    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    let mut roots = if q == 0.0 {
+        vec![0.0]
+    } else {
+        vec![q / a, c / q]
+    };
+    roots.sort_by(f64::total_cmp);
+    roots
+}
+
+/// A root of `f` in `(lo, hi)`, given `f(lo) * f(hi) < 0`.
+fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, f_lo: f64) -> f64 {
+    let lo_negative = f_lo < 0.0;
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            break;
+        }
+        if (f(mid) < 0.0) == lo_negative {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn src(x: f64, y: f64, sigma: f64) -> SourceDistance<f64> {
+        SourceDistance { x, y, sigma }
+    }
+
+    #[test]
+    fn property1_symmetric_sources_have_infinitely_many_roots() {
+        let r = f64::bisector_roots(&src(0.5, 1.0, 0.3), &src(0.5, -1.0, 0.3), &0.0, &1.0);
+        assert_eq!(r, BisectorRoots::Infinite);
+    }
+
+    #[test]
+    fn property1_one_root_is_the_perpendicular_bisector() {
+        match f64::bisector_roots(&src(0.0, 1.0, 0.0), &src(1.0, 1.0, 0.0), &0.0, &1.0) {
+            BisectorRoots::One(r) => assert!((r - 0.5).abs() < 1e-14),
+            other => panic!("expected one root, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn property1_hyperbolic_bisector_root_solves_eq1() {
+        let (a, b) = (src(0.1, 0.7, 0.4), src(0.9, 0.3, 0.2));
+        match f64::bisector_roots(&a, &b, &0.0, &1.0) {
+            BisectorRoots::One(r) => assert!((a.at(&r) - b.at(&r)).abs() < 1e-12),
+            other => panic!("expected one root, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn property1_two_roots_from_opposite_sides() {
+        // A near pseudo-source with a large sigma beats a far one only near its foot.
+        let (a, b) = (src(0.5, 0.05, 1.5), src(0.5, -2.0, 0.0));
+        match f64::bisector_roots(&a, &b, &-1.0, &2.0) {
+            BisectorRoots::Two(r, s) => {
+                assert!(r < 0.5 && s > 0.5);
+                assert!((a.at(&r) - b.at(&r)).abs() < 1e-12);
+                assert!((a.at(&s) - b.at(&s)).abs() < 1e-12);
+            }
+            other => panic!("expected two roots, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn property1_parallel_offset_has_no_root() {
+        // Example 2's configuration: P - P' parallel to the edge and sigma = |P - P'|.
+        let (a, b) = (src(0.2, 0.5, 0.0), src(-0.3, 0.5, 0.5));
+        let eq2 = Eq2Coefficients::new(&a, &b, &0.0);
+        assert!(eq2.a.abs() < 1e-15 && eq2.b.abs() < 1e-15 && eq2.c.abs() > 1e-3);
+        assert_eq!(f64::bisector_roots(&a, &b, &0.5, &1.0), BisectorRoots::None);
+    }
+
+    #[test]
+    fn distance_ties_are_relative() {
+        assert_eq!(1.0f64.compare_distance(&(1.0 + 1e-15)), Ordering::Equal);
+        assert_eq!(1.0f64.compare_distance(&1.001), Ordering::Less);
+        assert_eq!(1e6f64.compare_distance(&(1e6 + 1e-9)), Ordering::Equal);
+    }
+}
