@@ -5,7 +5,6 @@ use super::field::GeodesicField;
 use crate::mesh::EdgeId;
 use crate::scalar::Scalar;
 use serde::Serialize;
-use std::cmp::Ordering;
 
 /// One place where the final wedges of an edge fail to tile it.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -63,7 +62,8 @@ impl CoverageReport {
 
 impl<S: Scalar> GeodesicField<'_, S> {
     /// Checks Property 2: on every edge that some wedge reached, the final wedges are sorted,
-    /// pairwise disjoint and cover the edge from end to end. Comparisons are the backend's own.
+    /// pairwise disjoint and cover the edge from end to end. A gap or overlap counts if the
+    /// backend would keep a wedge that long ([`Scalar::has_extent`]).
     pub fn check_coverage(&self) -> CoverageReport {
         let mut report = CoverageReport::default();
         for (i, wedges) in self.wedges.iter().enumerate() {
@@ -72,25 +72,25 @@ impl<S: Scalar> GeodesicField<'_, S> {
             }
             report.edges_reached += 1;
             let edge = EdgeId(i as u32);
+            let length = self.edge_length(edge);
             let mut reached = S::zero();
             for w in wedges {
-                match w.b0.compare(&reached) {
-                    Ordering::Greater => report.issues.push(CoverageIssue::Gap {
+                if S::has_extent(&reached, &w.b0, length) {
+                    report.issues.push(CoverageIssue::Gap {
                         edge,
                         from: reached.to_f64(),
                         to: w.b0.to_f64(),
-                    }),
-                    Ordering::Less => report.issues.push(CoverageIssue::Overlap {
+                    });
+                } else if S::has_extent(&w.b0, &reached, length) {
+                    report.issues.push(CoverageIssue::Overlap {
                         edge,
                         from: w.b0.to_f64(),
                         to: S::min_of(&reached, &w.b1).to_f64(),
-                    }),
-                    Ordering::Equal => {}
+                    });
                 }
                 reached = S::max_of(&reached, &w.b1);
             }
-            let length = self.edge_length(edge);
-            if reached.compare(length) == Ordering::Less {
+            if S::has_extent(&reached, length, length) {
                 report.issues.push(CoverageIssue::Gap {
                     edge,
                     from: reached.to_f64(),

@@ -8,8 +8,9 @@
 //! wins only in its middle (Fig. 8c, Fig. 10).
 
 use super::propagate::{Engine, Slot, SlotState};
+use super::stats::Eq2Counts;
 use super::wedge::Wedge;
-use crate::scalar::Scalar;
+use crate::scalar::{BisectorRoots, Eq2Case, Scalar, SourceDistance};
 use std::cmp::Ordering;
 
 /// Who owns a piece of the edge after an intersection.
@@ -19,7 +20,7 @@ enum Owner {
     Old(u32),
 }
 
-struct Piece<S> {
+pub(crate) struct Piece<S> {
     lo: S,
     hi: S,
     owner: Owner,
@@ -33,6 +34,87 @@ fn push_piece<S: Scalar>(pieces: &mut Vec<Piece<S>>, lo: S, hi: S, owner: Owner)
         }
     }
     pieces.push(Piece { lo, hi, owner });
+}
+
+/// Reusable buffers of the intersection, kept across insertions to avoid allocating.
+pub(crate) struct Scratch<S> {
+    pieces: Vec<Piece<S>>,
+    reused: Vec<u32>,
+    ids: Vec<u32>,
+}
+
+impl<S> Default for Scratch<S> {
+    fn default() -> Self {
+        Scratch {
+            pieces: Vec::new(),
+            reused: Vec::new(),
+            ids: Vec::new(),
+        }
+    }
+}
+
+/// The smallest value of a distance function on `[lo, hi]` (it is convex, so the foot of the
+/// pseudo-source if inside, else the nearer end).
+fn min_on<S: Scalar>(d: &SourceDistance<S>, lo: &S, hi: &S, at_lo: &S, at_hi: &S) -> S {
+    if d.x.compare(lo) == Ordering::Greater && d.x.compare(hi) == Ordering::Less {
+        d.y.clone() + &d.sigma
+    } else {
+        S::min_of(at_lo, at_hi)
+    }
+}
+
+/// Splits the range `[lo, hi]` shared by an existing wedge (`theirs`) and the new one
+/// (`mine`) into pieces, each owned by the better wedge [LZT §4]. Coincident distance
+/// functions keep the existing wedge (step 2.3.2). When one wedge is better at every point of
+/// the range by the bounds of convexity, eq. (2) has no root there and is not solved;
+/// otherwise its roots cut the range, and each piece goes to the wedge better at its middle.
+fn split_shared_range<S: Scalar>(
+    counts: &mut Eq2Counts,
+    pieces: &mut Vec<Piece<S>>,
+    theirs: &SourceDistance<S>,
+    mine: &SourceDistance<S>,
+    lo: S,
+    hi: S,
+    id: u32,
+) {
+    if S::same_distance_function(theirs, mine, &(hi.clone() - &lo)) {
+        counts.count(Eq2Case::Infinite);
+        push_piece(pieces, lo, hi, Owner::Old(id));
+        return;
+    }
+    let (their_lo, their_hi) = (theirs.at(&lo), theirs.at(&hi));
+    let (my_lo, my_hi) = (mine.at(&lo), mine.at(&hi));
+    let their_max = S::max_of(&their_lo, &their_hi);
+    if min_on(mine, &lo, &hi, &my_lo, &my_hi).compare_distance(&their_max) != Ordering::Less {
+        counts.count(Eq2Case::None);
+        push_piece(pieces, lo, hi, Owner::Old(id));
+        return;
+    }
+    let my_max = S::max_of(&my_lo, &my_hi);
+    if my_max.compare_distance(&min_on(theirs, &lo, &hi, &their_lo, &their_hi)) == Ordering::Less {
+        counts.count(Eq2Case::None);
+        push_piece(pieces, lo, hi, Owner::New);
+        return;
+    }
+    let roots = S::bisector_roots(theirs, mine, &lo, &hi);
+    counts.count(roots.case());
+    let (first, second) = match roots {
+        BisectorRoots::One(r) => (Some(r), None),
+        BisectorRoots::Two(r, s) => (Some(r), Some(s)),
+        BisectorRoots::None | BisectorRoots::Infinite => (None, None),
+    };
+    let half = S::from_f64(0.5);
+    let mut start = lo;
+    for end in [first, second, Some(hi)].into_iter().flatten() {
+        let mid = (start.clone() + &end) * &half;
+        let owner = if mine.at(&mid).compare_distance(&theirs.at(&mid)) == Ordering::Less {
+            Owner::New
+        } else {
+            Owner::Old(id)
+        };
+        push_piece(pieces, start, end.clone(), owner);
+        start = end;
+    }
 }
 
 impl<S: Scalar> Engine<'_, S> {
@@ -50,10 +132,13 @@ impl<S: Scalar> Engine<'_, S> {
         let end = first
             + list[first..]
                 .iter()
-                .take_while(|&&id| self.slots[id as usize].wedge.b0.compare(&w.b1) == Ordering::Less)
+                .take_while(|&&id| {
+                    self.slots[id as usize].wedge.b0.compare(&w.b1) == Ordering::Less
+                })
                 .count();
         let mine = w.distance_function();
-        let mut pieces: Vec<Piece<S>> = Vec::new();
+        let mut pieces = std::mem::take(&mut self.scratch.pieces);
+        pieces.clear();
         let mut cursor = w.b0.clone();
         for &id in &list[first..end] {
             let old = &self.slots[id as usize].wedge;
@@ -66,25 +151,15 @@ impl<S: Scalar> Engine<'_, S> {
             let lo = S::max_of(&old.b0, &w.b0);
             let hi = S::min_of(&old.b1, &w.b1);
             let theirs = old.distance_function();
-            let roots = S::bisector_roots(&theirs, &mine, &lo, &hi);
-            self.stats.eq2.count(roots.case());
-            let mut bounds = vec![lo];
-            match roots {
-                crate::scalar::BisectorRoots::One(r) => bounds.push(r),
-                crate::scalar::BisectorRoots::Two(r, s) => bounds.extend([r, s]),
-                _ => {}
-            }
-            bounds.push(hi.clone());
-            let half = S::from_f64(0.5);
-            for pair in bounds.windows(2) {
-                let mid = (pair[0].clone() + &pair[1]) * &half;
-                let owner = if mine.at(&mid).compare_distance(&theirs.at(&mid)) == Ordering::Less {
-                    Owner::New
-                } else {
-                    Owner::Old(id)
-                };
-                push_piece(&mut pieces, pair[0].clone(), pair[1].clone(), owner);
-            }
+            split_shared_range(
+                &mut self.stats.eq2,
+                &mut pieces,
+                &theirs,
+                &mine,
+                lo,
+                hi.clone(),
+                id,
+            );
             if old.b1.compare(&w.b1) == Ordering::Greater {
                 push_piece(&mut pieces, w.b1.clone(), old.b1.clone(), Owner::Old(id));
             }
@@ -93,29 +168,44 @@ impl<S: Scalar> Engine<'_, S> {
         if cursor.compare(&w.b1) == Ordering::Less {
             push_piece(&mut pieces, cursor, w.b1.clone(), Owner::New);
         }
-        if pieces.iter().all(|p| p.owner != Owner::New) {
-            return;
+        if pieces.iter().any(|p| p.owner == Owner::New) {
+            self.rebuild(&w, first, end, &mut pieces, &length);
         }
-        self.rebuild(w, first, end, pieces, &length);
+        self.scratch.pieces = pieces;
     }
 
     /// Replaces the wedges `first..end` of the new wedge's edge list by the pieces.
-    fn rebuild(&mut self, w: Wedge<S>, first: usize, end: usize, pieces: Vec<Piece<S>>, length: &S) {
+    fn rebuild(
+        &mut self,
+        w: &Wedge<S>,
+        first: usize,
+        end: usize,
+        pieces: &mut Vec<Piece<S>>,
+        length: &S,
+    ) {
         let e = w.edge;
-        let old_ids: Vec<u32> = self.lists[e.index()][first..end].to_vec();
-        let mut reused: Vec<u32> = Vec::with_capacity(old_ids.len());
-        let mut ids: Vec<u32> = Vec::with_capacity(pieces.len());
-        let mut new_ends = Vec::new();
-        for piece in pieces {
+        let mut reused = std::mem::take(&mut self.scratch.reused);
+        let mut ids = std::mem::take(&mut self.scratch.ids);
+        reused.clear();
+        ids.clear();
+        let [v0, v1] = self.mesh.edge(e).vertices;
+        let zero = S::zero();
+        let mine = w.distance_function();
+        for piece in pieces.drain(..) {
             if !S::has_extent(&piece.lo, &piece.hi, length) {
                 continue;
             }
             match piece.owner {
                 Owner::New => {
+                    if S::within(&zero, &piece.lo, &piece.hi, length) {
+                        self.improve_vertex(v0, mine.at(&zero), w.source);
+                    }
+                    if S::within(length, &piece.lo, &piece.hi, length) {
+                        self.improve_vertex(v1, mine.at(length), w.source);
+                    }
                     let mut wedge = w.clone();
                     wedge.b0 = piece.lo;
                     wedge.b1 = piece.hi;
-                    new_ends.push((wedge.b0.clone(), wedge.b1.clone()));
                     let id = self.allocate(wedge, SlotState::Queued);
                     self.push_wedge_event(id);
                     ids.push(id);
@@ -147,7 +237,8 @@ impl<S: Scalar> Engine<'_, S> {
                 }
             }
         }
-        for id in old_ids {
+        for i in first..end {
+            let id = self.lists[e.index()][i];
             if !reused.contains(&id) {
                 let slot = &mut self.slots[id as usize];
                 slot.state = SlotState::Free;
@@ -156,23 +247,13 @@ impl<S: Scalar> Engine<'_, S> {
             }
         }
         self.list_entries = self.list_entries + ids.len() - (end - first);
-        self.lists[e.index()].splice(first..end, ids);
+        self.lists[e.index()].splice(first..end, ids.drain(..));
         let bytes = self.slots.len() * std::mem::size_of::<Slot<S>>()
             + self.list_entries * std::mem::size_of::<u32>()
             + self.lists.len() * std::mem::size_of::<Vec<u32>>();
         self.stats.peak_wedge_bytes = self.stats.peak_wedge_bytes.max(bytes);
-
-        let [v0, v1] = self.mesh.edge(e).vertices;
-        let d = w.distance_function();
-        let zero = S::zero();
-        for (lo, hi) in new_ends {
-            if S::within(&zero, &lo, &hi, length) {
-                self.improve_vertex(v0, d.at(&zero), w.source);
-            }
-            if S::within(length, &lo, &hi, length) {
-                self.improve_vertex(v1, d.at(length), w.source);
-            }
-        }
+        self.scratch.reused = reused;
+        self.scratch.ids = ids;
     }
 
     fn allocate(&mut self, wedge: Wedge<S>, state: SlotState) -> u32 {

@@ -16,7 +16,7 @@ mod wedge;
 
 pub use coverage::{CoverageIssue, CoverageReport};
 pub use field::GeodesicField;
-pub use propagate::{propagate, propagate_with_progress, PropagateOptions, Progress};
+pub use propagate::{propagate, propagate_with_progress, Progress, PropagateOptions};
 pub use source::{PointError, SurfacePoint};
 pub use stats::{Eq2Counts, Stats};
 pub use trace_back::{GeodesicPath, TraceError};

@@ -2,6 +2,7 @@
 //! the smallest distance each gives, and of vertices waiting to act as pseudo-sources.
 
 use super::field::GeodesicField;
+use super::intersect::Scratch;
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::unfold::{planar_coordinates, position_in_space, FaceLayout, Planar, Unfolding};
@@ -157,6 +158,7 @@ pub(crate) struct Engine<'m, S: Scalar> {
     max_distance: f64,
     reached: usize,
     pub(crate) stats: Stats,
+    pub(crate) scratch: Scratch<S>,
 }
 
 impl<'m, S: Scalar> Engine<'m, S> {
@@ -174,6 +176,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             max_distance: options.max_distance.unwrap_or(f64::INFINITY),
             reached: 0,
             stats: Stats::default(),
+            scratch: Scratch::default(),
         }
     }
 
@@ -202,7 +205,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     }
                 }
                 EventKind::Vertex(v) => {
-                    let Some(known) = &self.vertices[v.index()] else { continue };
+                    let Some(known) = &self.vertices[v.index()] else {
+                        continue;
+                    };
                     if known.approx < self.emitted_at[v.index()] {
                         self.emitted_at[v.index()] = known.approx;
                         let (sigma, source) = (known.distance.clone(), known.source);
@@ -231,9 +236,20 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let wedges: Vec<Vec<Wedge<S>>> = self
             .lists
             .iter()
-            .map(|list| list.iter().map(|&i| slots[i as usize].wedge.clone()).collect())
+            .map(|list| {
+                list.iter()
+                    .map(|&i| slots[i as usize].wedge.clone())
+                    .collect()
+            })
             .collect();
-        GeodesicField::new(self.mesh, self.unfolding, sources, wedges, vertices, self.stats)
+        GeodesicField::new(
+            self.mesh,
+            self.unfolding,
+            sources,
+            wedges,
+            vertices,
+            self.stats,
+        )
     }
 
     pub(crate) fn push_wedge_event(&mut self, slot: u32) {
@@ -332,8 +348,19 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let corner = mesh.face(f).iter().position(|&c| c == v).expect("corner");
             let g = mesh.face_edges(f)[(corner + 1) % 3];
             let side = mesh.edge(g).side_of(f).expect("edge of the face");
-            let (x, y) = self.unfolding.apex(g, side).expect("face on that side").clone();
-            self.add_wedge(g, Planar { x, y }, Side::from_index(side), sigma.clone(), source, k);
+            let (x, y) = self
+                .unfolding
+                .apex(g, side)
+                .expect("face on that side")
+                .clone();
+            self.add_wedge(
+                g,
+                Planar { x, y },
+                Side::from_index(side),
+                sigma.clone(),
+                source,
+                k,
+            );
         }
         for &g in mesh.vertex_edges(v) {
             let x = if mesh.edge(g).vertices[0] == v {
@@ -347,7 +374,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
     }
 
     /// Adds a wedge covering the whole edge `g`.
-    fn add_wedge(&mut self, g: EdgeId, at: Planar<S>, tau: Side, sigma: S, source: PseudoSource, k: usize) {
+    fn add_wedge(
+        &mut self,
+        g: EdgeId,
+        at: Planar<S>,
+        tau: Side,
+        sigma: S,
+        source: PseudoSource,
+        k: usize,
+    ) {
         let wedge = Wedge {
             edge: g,
             b0: S::zero(),

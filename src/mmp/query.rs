@@ -80,7 +80,10 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 if let Some(d) = &self.vertices[v.index()] {
                     let q = self.mesh.position(v).map(S::from_f64);
                     let gap = [0, 1, 2].map(|i| q[i].clone() - &p[i]);
-                    let len = (gap[0].clone() * &gap[0] + gap[1].clone() * &gap[1] + gap[2].clone() * &gap[2]).sqrt();
+                    let len = (gap[0].clone() * &gap[0]
+                        + gap[1].clone() * &gap[1]
+                        + gap[2].clone() * &gap[2])
+                        .sqrt();
                     keep_better(
                         &mut best,
                         Best {
@@ -96,7 +99,12 @@ impl<S: Scalar> GeodesicField<'_, S> {
 
     /// The best wedge on `edge` whose pseudo-source sees the point `at` (in the edge's frame,
     /// y >= 0 towards `face`) through the wedge's range.
-    pub(crate) fn best_through_edge(&self, edge: EdgeId, face: FaceId, at: &Planar<S>) -> Option<Best<S>> {
+    pub(crate) fn best_through_edge(
+        &self,
+        edge: EdgeId,
+        face: FaceId,
+        at: &Planar<S>,
+    ) -> Option<Best<S>> {
         let side = self.mesh.edge(edge).side_of(face)?;
         let length = self.unfolding.length(edge);
         let mut best = None;

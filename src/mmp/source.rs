@@ -156,12 +156,16 @@ impl SurfacePoint {
                             SurfacePoint::Edge { edge, t: 1.0 - t }
                         }
                     }
-                    _ => SurfacePoint::Vertex(corners[(0..3).find(|i| !zeros.contains(i)).expect("one corner is non-zero")]),
+                    _ => SurfacePoint::Vertex(
+                        corners[(0..3)
+                            .find(|i| !zeros.contains(i))
+                            .expect("one corner is non-zero")],
+                    ),
                 })
             }
-            SurfacePoint::Edge { edge, t } if t == 0.0 || t == 1.0 => {
-                Ok(SurfacePoint::Vertex(mesh.edge(edge).vertices[usize::from(t == 1.0)]))
-            }
+            SurfacePoint::Edge { edge, t } if t == 0.0 || t == 1.0 => Ok(SurfacePoint::Vertex(
+                mesh.edge(edge).vertices[usize::from(t == 1.0)],
+            )),
             point => Ok(point),
         }
     }
@@ -185,7 +189,9 @@ impl SurfacePoint {
     pub fn faces<'m>(&self, mesh: &'m TriMesh) -> Vec<FaceId> {
         match *self {
             SurfacePoint::Vertex(v) => mesh.vertex_faces(v).to_vec(),
-            SurfacePoint::Edge { edge, .. } => mesh.edge(edge).faces.iter().flatten().copied().collect(),
+            SurfacePoint::Edge { edge, .. } => {
+                mesh.edge(edge).faces.iter().flatten().copied().collect()
+            }
             SurfacePoint::Face { face, .. } => vec![face],
         }
     }

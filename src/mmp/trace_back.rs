@@ -86,10 +86,18 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     if let Some(k) = self.source_at_vertex(v) {
                         return Ok(self.finish(simplices, distance, k));
                     }
-                    via = self.arrival_at_vertex(v).ok_or(TraceError::Unreachable)?.via;
+                    via = self
+                        .arrival_at_vertex(v)
+                        .ok_or(TraceError::Unreachable)?
+                        .via;
                     continue;
                 }
-                Via::Wedge { edge, wedge, face, at } => {
+                Via::Wedge {
+                    edge,
+                    wedge,
+                    face,
+                    at,
+                } => {
                     let w = &self.wedges[edge.index()][wedge];
                     let walk = self.enter(edge, wedge, face, at, &mut simplices)?;
                     self.walk_to(walk, w.pseudo_source, &mut simplices, budget)?;
@@ -193,7 +201,12 @@ impl<S: Scalar> GeodesicField<'_, S> {
         let side = e.side_of(face).expect("face of the edge");
         let s = w.source_point();
         if w.tau.index() == side || w.source_y.sign() == Sign::Zero {
-            return Ok(Walk { edge, face, r: at, s });
+            return Ok(Walk {
+                edge,
+                face,
+                r: at,
+                s,
+            });
         }
         let depth = s.y.clone() + &at.y;
         let x = s.x.clone() + (at.x.clone() - &s.x) * &s.y / depth;
@@ -222,14 +235,25 @@ impl<S: Scalar> GeodesicField<'_, S> {
             if self.face_contains(walk.face, target) {
                 return Ok(());
             }
-            let side = self.mesh.edge(walk.edge).side_of(walk.face).expect("face of the edge");
+            let side = self
+                .mesh
+                .edge(walk.edge)
+                .side_of(walk.face)
+                .expect("face of the edge");
             let lost = || TraceError::Lost {
                 near: format!("{}", walk.face),
             };
-            let layout = FaceLayout::new(self.mesh, &self.unfolding, walk.edge, side).ok_or_else(lost)?;
+            let layout =
+                FaceLayout::new(self.mesh, &self.unfolding, walk.edge, side).ok_or_else(lost)?;
             // The layout hangs the face below the edge's line: mirror the walk's points into it.
-            let r = Planar { x: walk.r.x.clone(), y: -walk.r.y.clone() };
-            let s = Planar { x: walk.s.x.clone(), y: -walk.s.y.clone() };
+            let r = Planar {
+                x: walk.r.x.clone(),
+                y: -walk.r.y.clone(),
+            };
+            let s = Planar {
+                x: walk.s.x.clone(),
+                y: -walk.s.y.clone(),
+            };
             let (dx, dy) = (s.x.clone() - &r.x, s.y.clone() - &r.y);
             let cross = |ax: S, ay: S| dx.clone() * &ay - dy.clone() * &ax;
             let (cx, cy) = (layout.apex_x.clone(), -layout.apex_h.clone());
@@ -240,7 +264,11 @@ impl<S: Scalar> GeodesicField<'_, S> {
             let (next_edge, position, along) = if turn.sign() == Sign::Positive {
                 let t = cross(zero.clone() - &r.x, zero.clone() - &r.y) / cross(cx, cy);
                 let t = clamp(-t);
-                (layout.wing.near, layout.near_position(&t), layout.to_near(&s))
+                (
+                    layout.wing.near,
+                    layout.near_position(&t),
+                    layout.to_near(&s),
+                )
             } else {
                 let ux = layout.length.clone() - &cx;
                 let uy = zero.clone() - &cy;
@@ -248,15 +276,24 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 let u = clamp(u);
                 (layout.wing.far, layout.far_position(&u), layout.to_far(&s))
             };
-            push_point(simplices, edge_point(next_edge, &position, self.unfolding.length(next_edge)));
+            push_point(
+                simplices,
+                edge_point(next_edge, &position, self.unfolding.length(next_edge)),
+            );
             let e = self.mesh.edge(next_edge);
             let here = e.side_of(walk.face).expect("face of the edge");
             let next_face = e.faces[1 - here].ok_or_else(lost)?;
             walk = Walk {
                 edge: next_edge,
                 face: next_face,
-                r: Planar { x: position, y: S::zero() },
-                s: Planar { x: along.x, y: -along.y },
+                r: Planar {
+                    x: position,
+                    y: S::zero(),
+                },
+                s: Planar {
+                    x: along.x,
+                    y: -along.y,
+                },
             };
         }
         Err(TraceError::Lost {

@@ -70,7 +70,9 @@ pub(crate) fn position_in_space<S: Scalar>(mesh: &TriMesh, point: &SurfacePoint)
         SurfacePoint::Face { face, bary } => {
             let c = mesh.face(face).map(p);
             let w = bary.map(S::from_f64);
-            [0, 1, 2].map(|i| c[0][i].clone() * &w[0] + c[1][i].clone() * &w[1] + c[2][i].clone() * &w[2])
+            [0, 1, 2].map(|i| {
+                c[0][i].clone() * &w[0] + c[1][i].clone() * &w[1] + c[2][i].clone() * &w[2]
+            })
         }
     }
 }
@@ -179,7 +181,8 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
     #[inline]
     pub(crate) fn far_hit(&self, s: &Planar<S>, b: &S) -> S {
         let dx = b.clone() - &s.x;
-        let num = dx.clone() * &(s.y.clone() + self.apex_h) + s.y.clone() * &(s.x.clone() - self.apex_x);
+        let num =
+            dx.clone() * &(s.y.clone() + self.apex_h) + s.y.clone() * &(s.x.clone() - self.apex_x);
         let den = dx * self.apex_h + s.y.clone() * &(self.length.clone() - self.apex_x);
         num / den
     }
@@ -207,7 +210,10 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         let x = (s.x.clone() * self.apex_x - s.y.clone() * self.apex_h) / a;
         let y = (self.apex_x.clone() * &s.y + self.apex_h.clone() * &s.x) / a;
         if self.near_reversed {
-            Planar { x: a.clone() - x, y }
+            Planar {
+                x: a.clone() - x,
+                y,
+            }
         } else {
             Planar { x, y }
         }
@@ -223,7 +229,10 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         let x = (sx.clone() * &ux + sy.clone() * self.apex_h) / b;
         let y = (ux * &sy - self.apex_h.clone() * &sx) / b;
         if self.far_reversed {
-            Planar { x: b.clone() - x, y }
+            Planar {
+                x: b.clone() - x,
+                y,
+            }
         } else {
             Planar { x, y }
         }

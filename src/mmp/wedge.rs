@@ -114,7 +114,8 @@ impl<S: Scalar> Wedge<S> {
 
     /// The smallest distance the wedge gives on its range (its priority [SSK+05 §4]).
     pub fn min_distance(&self) -> S {
-        let inside = self.source_x.compare(&self.b0).is_ge() && self.source_x.compare(&self.b1).is_le();
+        let inside =
+            self.source_x.compare(&self.b0).is_ge() && self.source_x.compare(&self.b1).is_le();
         if inside {
             self.sigma.clone() + &self.source_y
         } else {

@@ -83,6 +83,17 @@ impl Scalar for f64 {
         *x >= lo - slack && *x <= hi + slack
     }
 
+    fn same_distance_function(
+        a: &SourceDistance<f64>,
+        b: &SourceDistance<f64>,
+        scale: &f64,
+    ) -> bool {
+        let same = FloatTolerance::SAME_SOURCE * scale.max(a.y.abs()).max(b.y.abs());
+        (a.x - b.x).abs() <= same
+            && (a.sigma - b.sigma).abs() <= same
+            && (a.y.abs() - b.y.abs()).abs() <= same
+    }
+
     fn bisector_roots(
         a: &SourceDistance<f64>,
         b: &SourceDistance<f64>,
@@ -90,35 +101,37 @@ impl Scalar for f64 {
         hi: &f64,
     ) -> BisectorRoots<f64> {
         let (lo, hi) = (*lo, *hi);
+        if f64::same_distance_function(a, b, &(hi - lo)) {
+            return BisectorRoots::Infinite;
+        }
         let scale = (hi - lo)
             .max(a.y.abs())
             .max(b.y.abs())
             .max((a.x - lo).abs())
             .max((b.x - lo).abs());
-        let same = FloatTolerance::SAME_SOURCE * scale;
-        if (a.x - b.x).abs() <= same
-            && (a.sigma - b.sigma).abs() <= same
-            && (a.y.abs() - b.y.abs()).abs() <= same
-        {
-            return BisectorRoots::Infinite;
-        }
         let f = |t: f64| a.at(&t) - b.at(&t);
         let solves_eq1 =
             |t: f64| f(t).abs() <= FloatTolerance::ROOT_RESIDUAL * a.at(&t).max(b.at(&t));
         let eq2 = Eq2Coefficients::new(a, b, &lo);
-        let mut roots: Vec<f64> = quadratic_roots(eq2.a, eq2.b, eq2.c, hi - lo)
-            .into_iter()
-            .map(|t| t + lo)
-            .filter(|&t| t > lo && t < hi && solves_eq1(t))
-            .collect();
-        roots.dedup_by(|x, y| (*x - *y).abs() <= FloatTolerance::EXTENT * scale);
+        let (candidates, count) = quadratic_roots(eq2.a, eq2.b, eq2.c, hi - lo);
+        let mut roots = [0.0; 2];
+        let mut found = 0;
+        for &t in &candidates[..count] {
+            let t = t + lo;
+            let distinct = found == 0 || t - roots[found - 1] > FloatTolerance::EXTENT * scale;
+            if t > lo && t < hi && distinct && solves_eq1(t) {
+                roots[found] = t;
+                found += 1;
+            }
+        }
         // Eq. (2) is ill-conditioned when the pseudo-sources nearly coincide; a sign change of
         // eq. (1) across the range proves a crossing, so find it directly if eq. (2) missed it.
         let (f_lo, f_hi) = (f(lo), f(hi));
-        if roots.len() % 2 == 0 && f_lo * f_hi < 0.0 {
-            roots = vec![bisect(f, lo, hi, f_lo)];
+        if found % 2 == 0 && f_lo * f_hi < 0.0 {
+            roots[0] = bisect(f, lo, hi, f_lo);
+            found = 1;
         }
-        match roots[..] {
+        match roots[..found] {
             [] => BisectorRoots::None,
             [r] => BisectorRoots::One(r),
             [r, s] => BisectorRoots::Two(r, s),
@@ -127,32 +140,31 @@ impl Scalar for f64 {
     }
 }
 
-/// Real roots of `a t^2 + b t + c` in increasing order, computed without cancellation; `width`
-/// is the length of the range of interest, which tells when `a` (or `b`) is negligible.
-fn quadratic_roots(a: f64, b: f64, c: f64, width: f64) -> Vec<f64> {
+/// Real roots of `a t^2 + b t + c` in increasing order (the first `count` entries), computed
+/// without cancellation; `width` is the length of the range of interest, which tells when `a`
+/// (or `b`) is negligible.
+fn quadratic_roots(a: f64, b: f64, c: f64, width: f64) -> ([f64; 2], usize) {
     let linear_size = b.abs() * width + c.abs();
     if a.abs() * width * width <= f64::EPSILON * linear_size {
-        if b.abs() * width <= f64::EPSILON * c.abs() || b == 0.0 {
-            return Vec::new();
+        if b == 0.0 || b.abs() * width <= f64::EPSILON * c.abs() {
+            return ([0.0; 2], 0);
         }
-        return vec![-c / b];
+        return ([-c / b, 0.0], 1);
     }
     let disc = b * b - 4.0 * a * c;
     if disc < 0.0 {
         // A tangency rounded to a negative discriminant still touches zero at the vertex.
         if disc >= -8.0 * f64::EPSILON * (b * b).max((4.0 * a * c).abs()) {
-            return vec![-b / (2.0 * a)];
+            return ([-b / (2.0 * a), 0.0], 1);
         }
-        return Vec::new();
+        return ([0.0; 2], 0);
     }
     let q = -0.5 * (b + b.signum() * disc.sqrt());
-    let mut roots = if q == 0.0 {
-        vec![0.0]
-    } else {
-        vec![q / a, c / q]
-    };
-    roots.sort_by(f64::total_cmp);
-    roots
+    if q == 0.0 {
+        return ([0.0; 2], 1);
+    }
+    let (r, s) = (q / a, c / q);
+    ([r.min(s), r.max(s)], 2)
 }
 
 /// A root of `f` in `(lo, hi)`, given `f(lo) * f(hi) < 0`.

@@ -5,8 +5,8 @@
 //! How exact a decision is belongs to the backend: [`f64`] decides with the one documented
 //! tolerance policy in [`float`]; exact backends decide with certified signs.
 
-pub mod float;
 mod bisector;
+pub mod float;
 
 pub use bisector::{BisectorRoots, Eq2Case, Eq2Coefficients, SourceDistance};
 
@@ -72,6 +72,14 @@ pub trait Scalar:
 
     /// Whether `x` lies in `[lo, hi]` on an edge of length `scale` (closed range).
     fn within(x: &Self, lo: &Self, hi: &Self, scale: &Self) -> bool;
+
+    /// Whether two wedges have the same distance function on a range of length about `scale`:
+    /// the case `A = B = C = 0` of eq. (2) with infinitely many solutions (Example 1 [LZT §3]).
+    fn same_distance_function(
+        a: &SourceDistance<Self>,
+        b: &SourceDistance<Self>,
+        scale: &Self,
+    ) -> bool;
 
     /// Roots of eq. (2) [LZT §2] that solve eq. (1), strictly inside `(lo, hi)`, in increasing
     /// order; by Property 1 there are none, one, two or infinitely many.
