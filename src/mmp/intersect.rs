@@ -223,14 +223,15 @@ impl<S: Scalar> Engine<'_, S> {
                     } else {
                         reused.push(id);
                         if !unchanged {
+                            // A trimmed wedge keeps its queue event: trimming only raises its
+                            // key, and the event is re-queued with the new key when it pops.
                             let slot = &mut self.slots[id as usize];
                             slot.wedge.b0 = piece.lo;
                             slot.wedge.b1 = piece.hi;
-                            slot.generation = slot.generation.wrapping_add(1);
                         }
                         id
                     };
-                    if state == SlotState::Queued && (!unchanged || target != id) {
+                    if state == SlotState::Queued && target != id {
                         self.push_wedge_event(target);
                     }
                     ids.push(target);

@@ -198,6 +198,11 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 EventKind::Wedge { slot, generation } => {
                     let s = &mut self.slots[slot as usize];
                     if s.generation == generation && s.state == SlotState::Queued {
+                        let key = s.wedge.min_distance().to_f64();
+                        if key > event.key {
+                            self.queue.push(Event { key, ..event });
+                            continue;
+                        }
                         s.state = SlotState::Propagated;
                         let wedge = s.wedge.clone();
                         self.stats.wedges_propagated += 1;
