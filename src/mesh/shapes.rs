@@ -1,1 +1,500 @@
 //! Meshes the program generates itself: for tests, examples and the README's first command.
+//!
+//! All generated meshes are consistently oriented (counter-clockwise seen from outside, or from
+//! +z for planar ones), manifold, and free of zero-area faces.
+
+use super::TriMesh;
+
+/// A small deterministic generator (SplitMix64), so that generated meshes depend on the seed
+/// only, on every platform.
+#[derive(Clone, Debug)]
+pub struct SplitMix64(u64);
+
+impl SplitMix64 {
+    /// A generator started from `seed`.
+    pub fn new(seed: u64) -> Self {
+        SplitMix64(seed)
+    }
+
+    /// The next 64 random bits.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+
+    /// A uniform number in `[0, 1)`.
+    pub fn next_f64(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+fn build(positions: Vec<[f64; 3]>, faces: Vec<[u32; 3]>) -> TriMesh {
+    TriMesh::new(positions, faces).expect("generated meshes are valid by construction")
+}
+
+/// A planar `nx` by `ny` grid of `width` by `height` in z = 0, vertices row by row from the origin,
+/// each cell split along its diagonal from lower left to upper right.
+pub fn grid(nx: usize, ny: usize, width: f64, height: f64) -> TriMesh {
+    let (nx, ny) = (nx.max(1), ny.max(1));
+    let mut positions = Vec::with_capacity((nx + 1) * (ny + 1));
+    for j in 0..=ny {
+        for i in 0..=nx {
+            positions.push([
+                width * i as f64 / nx as f64,
+                height * j as f64 / ny as f64,
+                0.0,
+            ]);
+        }
+    }
+    let id = |i: usize, j: usize| (j * (nx + 1) + i) as u32;
+    let mut faces = Vec::with_capacity(2 * nx * ny);
+    for j in 0..ny {
+        for i in 0..nx {
+            faces.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
+            faces.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
+        }
+    }
+    build(positions, faces)
+}
+
+/// A planar grid of unit cells over `[0, n]^2` scaled by `1 / n`, keeping only the cells that
+/// `keep(i, j)` accepts, with unused vertices dropped.
+fn grid_region(
+    cells_x: usize,
+    cells_y: usize,
+    n: usize,
+    keep: impl Fn(usize, usize) -> bool,
+) -> TriMesh {
+    let mut index = vec![u32::MAX; (cells_x + 1) * (cells_y + 1)];
+    let mut positions = Vec::new();
+    let mut faces = Vec::new();
+    let mut id = |i: usize, j: usize, positions: &mut Vec<[f64; 3]>| {
+        let k = j * (cells_x + 1) + i;
+        if index[k] == u32::MAX {
+            index[k] = positions.len() as u32;
+            positions.push([i as f64 / n as f64, j as f64 / n as f64, 0.0]);
+        }
+        index[k]
+    };
+    for j in 0..cells_y {
+        for i in 0..cells_x {
+            if keep(i, j) {
+                let c = [(i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)]
+                    .map(|(a, b)| id(a, b, &mut positions));
+                faces.push([c[0], c[1], c[2]]);
+                faces.push([c[0], c[2], c[3]]);
+            }
+        }
+    }
+    build(positions, faces)
+}
+
+/// The planar L-shaped domain `[0, 2]^2` without `(1, 2]^2`, in cells of size `1 / n`; its reflex
+/// corner `(1, 1)` is a vertex.
+pub fn l_shape(n: usize) -> TriMesh {
+    let n = n.max(1);
+    grid_region(2 * n, 2 * n, n, |i, j| i < n || j < n)
+}
+
+/// The planar square `[0, 3]^2` with the square hole `(1, 2)^2`, in cells of size `1 / n`.
+pub fn square_with_hole(n: usize) -> TriMesh {
+    let n = n.max(1);
+    grid_region(3 * n, 3 * n, n, |i, j| {
+        !((n..2 * n).contains(&i) && (n..2 * n).contains(&j))
+    })
+}
+
+/// A random convex polygon in z = 0 (`boundary` corners on a jittered ellipse), fanned into
+/// triangles, with `interior` random points each inserted by splitting the triangle containing
+/// it into three. Points that would make a triangle too thin are skipped.
+pub fn random_convex_triangulation(seed: u64, boundary: usize, interior: usize) -> TriMesh {
+    let mut rng = SplitMix64::new(seed);
+    let boundary = boundary.max(3);
+    let (ax, ay) = (1.0 + 0.5 * rng.next_f64(), 0.7 + 0.5 * rng.next_f64());
+    let mut angles: Vec<f64> = (0..boundary)
+        .map(|k| (k as f64 + 0.8 * rng.next_f64()) * std::f64::consts::TAU / boundary as f64)
+        .collect();
+    angles.sort_by(f64::total_cmp);
+    let mut positions: Vec<[f64; 3]> = angles
+        .iter()
+        .map(|a| [ax * a.cos(), ay * a.sin(), 0.0])
+        .collect();
+    let mut faces: Vec<[u32; 3]> = (1..boundary as u32 - 1).map(|k| [0, k, k + 1]).collect();
+    let area2 = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| {
+        (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    };
+    let mut placed = 0;
+    let mut attempts = 0;
+    while placed < interior && attempts < 100 * (interior + 1) {
+        attempts += 1;
+        let (r, t) = (
+            rng.next_f64().sqrt(),
+            rng.next_f64() * std::f64::consts::TAU,
+        );
+        let p = [0.95 * ax * r * t.cos(), 0.95 * ay * r * t.sin(), 0.0];
+        let found = faces.iter().position(|f| {
+            let c = f.map(|i| positions[i as usize]);
+            let total = area2(c[0], c[1], c[2]);
+            [
+                area2(p, c[1], c[2]),
+                area2(c[0], p, c[2]),
+                area2(c[0], c[1], p),
+            ]
+            .iter()
+            .all(|&w| w / total > 0.02)
+        });
+        if let Some(k) = found {
+            let [a, b, c] = faces[k];
+            let new = positions.len() as u32;
+            positions.push(p);
+            faces[k] = [a, b, new];
+            faces.push([b, c, new]);
+            faces.push([c, a, new]);
+            placed += 1;
+        }
+    }
+    build(positions, faces)
+}
+
+/// The regular tetrahedron with vertices at alternate corners of the cube `[-1, 1]^3`.
+pub fn tetrahedron() -> TriMesh {
+    build(
+        vec![
+            [1.0, 1.0, 1.0],
+            [1.0, -1.0, -1.0],
+            [-1.0, 1.0, -1.0],
+            [-1.0, -1.0, 1.0],
+        ],
+        vec![[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]],
+    )
+}
+
+/// The unit cube `[0, 1]^3`, each square split into two triangles.
+pub fn cube() -> TriMesh {
+    build(
+        vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [1.0, 0.0, 1.0],
+            [1.0, 1.0, 1.0],
+            [0.0, 1.0, 1.0],
+        ],
+        vec![
+            [0, 2, 1],
+            [0, 3, 2],
+            [4, 5, 6],
+            [4, 6, 7],
+            [0, 1, 5],
+            [0, 5, 4],
+            [1, 2, 6],
+            [1, 6, 5],
+            [2, 3, 7],
+            [2, 7, 6],
+            [3, 0, 4],
+            [3, 4, 7],
+        ],
+    )
+}
+
+/// The regular octahedron with vertices at the unit points of the axes.
+pub fn octahedron() -> TriMesh {
+    build(
+        vec![
+            [1.0, 0.0, 0.0],
+            [-1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, -1.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [0.0, 0.0, -1.0],
+        ],
+        vec![
+            [0, 2, 4],
+            [2, 1, 4],
+            [1, 3, 4],
+            [3, 0, 4],
+            [2, 0, 5],
+            [1, 2, 5],
+            [3, 1, 5],
+            [0, 3, 5],
+        ],
+    )
+}
+
+fn icosahedron_data() -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
+    let t = (1.0 + 5f64.sqrt()) / 2.0;
+    let positions = vec![
+        [-1.0, t, 0.0],
+        [1.0, t, 0.0],
+        [-1.0, -t, 0.0],
+        [1.0, -t, 0.0],
+        [0.0, -1.0, t],
+        [0.0, 1.0, t],
+        [0.0, -1.0, -t],
+        [0.0, 1.0, -t],
+        [t, 0.0, -1.0],
+        [t, 0.0, 1.0],
+        [-t, 0.0, -1.0],
+        [-t, 0.0, 1.0],
+    ];
+    let faces = vec![
+        [0, 11, 5],
+        [0, 5, 1],
+        [0, 1, 7],
+        [0, 7, 10],
+        [0, 10, 11],
+        [1, 5, 9],
+        [5, 11, 4],
+        [11, 10, 2],
+        [10, 7, 6],
+        [7, 1, 8],
+        [3, 9, 4],
+        [3, 4, 2],
+        [3, 2, 6],
+        [3, 6, 8],
+        [3, 8, 9],
+        [4, 9, 5],
+        [2, 4, 11],
+        [6, 2, 10],
+        [8, 6, 7],
+        [9, 8, 1],
+    ];
+    (positions, faces)
+}
+
+/// The regular icosahedron with vertices `(0, ±1, ±phi)` and their cyclic permutations.
+pub fn icosahedron() -> TriMesh {
+    let (positions, faces) = icosahedron_data();
+    build(positions, faces)
+}
+
+/// The icosahedron subdivided `subdivisions` times (each triangle into four), with every vertex
+/// on the unit sphere: `10 * 4^k + 2` vertices.
+pub fn icosphere(subdivisions: u32) -> TriMesh {
+    let (positions, mut faces) = icosahedron_data();
+    let normalise = |p: [f64; 3]| {
+        let r = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
+        [p[0] / r, p[1] / r, p[2] / r]
+    };
+    let mut positions: Vec<[f64; 3]> = positions.into_iter().map(normalise).collect();
+    for _ in 0..subdivisions {
+        let mut midpoint = std::collections::HashMap::new();
+        let mut mid = |a: u32, b: u32, positions: &mut Vec<[f64; 3]>| {
+            *midpoint.entry((a.min(b), a.max(b))).or_insert_with(|| {
+                let (p, q) = (positions[a as usize], positions[b as usize]);
+                positions.push(normalise([p[0] + q[0], p[1] + q[1], p[2] + q[2]]));
+                (positions.len() - 1) as u32
+            })
+        };
+        let mut next = Vec::with_capacity(4 * faces.len());
+        for [a, b, c] in faces {
+            let (ab, bc, ca) = (
+                mid(a, b, &mut positions),
+                mid(b, c, &mut positions),
+                mid(c, a, &mut positions),
+            );
+            next.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
+        }
+        faces = next;
+    }
+    build(positions, faces)
+}
+
+/// The mesh of Example 4 [LZT §3]: 14 vertices and 24 faces, in the paper's order.
+pub fn paper_example4() -> TriMesh {
+    build(
+        vec![
+            [0.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [0.0, 1.0, 1.0],
+            [1.0, 1.0, 1.0],
+            [1.0, 0.0, 1.0],
+            [0.5, -1.8, 0.5],
+            [-1.8, 0.5, 0.5],
+            [0.8, 2.6, 0.8],
+            [2.9, 0.2, 0.2],
+            [0.1, 0.9, -1.5],
+            [0.5, 0.5, 2.8],
+        ],
+        vec![
+            [0, 3, 8],
+            [3, 7, 8],
+            [7, 4, 8],
+            [4, 0, 8],
+            [1, 0, 9],
+            [5, 1, 9],
+            [4, 5, 9],
+            [0, 4, 9],
+            [2, 1, 10],
+            [6, 2, 10],
+            [5, 6, 10],
+            [1, 5, 10],
+            [2, 6, 11],
+            [6, 7, 11],
+            [7, 3, 11],
+            [3, 2, 11],
+            [0, 1, 12],
+            [1, 2, 12],
+            [2, 3, 12],
+            [3, 0, 12],
+            [5, 4, 13],
+            [6, 5, 13],
+            [7, 6, 13],
+            [4, 7, 13],
+        ],
+    )
+}
+
+/// The shapes [`parse_shape`] accepts.
+pub const SHAPE_NAMES: &[&str] = &[
+    "cube",
+    "tetrahedron",
+    "octahedron",
+    "icosahedron",
+    "icosphere:K",
+    "grid:NX,NY",
+    "l-shape:N",
+    "square-with-hole:N",
+    "convex:SEED,BOUNDARY,INTERIOR",
+    "paper-example-4",
+];
+
+/// A generated mesh by name (see [`SHAPE_NAMES`]), or `None` for an unknown name or bad numbers.
+/// Sizes are capped so that a typo cannot ask for billions of faces.
+pub fn parse_shape(spec: &str) -> Option<TriMesh> {
+    let (name, args) = spec.split_once(':').unwrap_or((spec, ""));
+    let numbers: Option<Vec<u64>> = if args.is_empty() {
+        Some(Vec::new())
+    } else {
+        args.split(',').map(|a| a.trim().parse().ok()).collect()
+    };
+    let numbers = numbers?;
+    let small = |x: u64, max: u64| (1..=max).contains(&x).then_some(x as usize);
+    Some(match (name, numbers.as_slice()) {
+        ("cube", []) => cube(),
+        ("tetrahedron", []) => tetrahedron(),
+        ("octahedron", []) => octahedron(),
+        ("icosahedron", []) => icosahedron(),
+        ("icosphere", &[k]) if k <= 8 => icosphere(k as u32),
+        ("grid", &[nx, ny]) => grid(small(nx, 2000)?, small(ny, 2000)?, 1.0, 1.0),
+        ("l-shape", &[n]) => l_shape(small(n, 1000)?),
+        ("square-with-hole", &[n]) => square_with_hole(small(n, 1000)?),
+        ("convex", &[seed, b, i]) => {
+            random_convex_triangulation(seed, small(b, 10_000)?.max(3), i.min(100_000) as usize)
+        }
+        ("paper-example-4", []) => paper_example4(),
+        _ => return None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn euler(mesh: &TriMesh) -> i64 {
+        mesh.vertex_count() as i64 - mesh.edge_count() as i64 + mesh.face_count() as i64
+    }
+
+    fn assert_clean(mesh: &TriMesh) {
+        let report = mesh.validation();
+        assert!(report.zero_area_faces.is_empty());
+        assert_eq!(report.inconsistently_oriented_edges, 0);
+        assert!(report.unreferenced_vertices.is_empty());
+        assert_eq!(report.components, 1);
+    }
+
+    #[test]
+    fn closed_shapes_are_spheres() {
+        for (mesh, v, f) in [
+            (tetrahedron(), 4, 4),
+            (cube(), 8, 12),
+            (octahedron(), 6, 8),
+            (icosahedron(), 12, 20),
+            (icosphere(2), 162, 320),
+            (paper_example4(), 14, 24),
+        ] {
+            assert_eq!((mesh.vertex_count(), mesh.face_count()), (v, f));
+            assert_eq!(mesh.validation().boundary_edges, 0);
+            assert_eq!(euler(&mesh), 2);
+            assert_clean(&mesh);
+        }
+    }
+
+    #[test]
+    fn closed_shapes_face_outwards() {
+        for mesh in [tetrahedron(), cube(), octahedron(), icosphere(1)] {
+            let centre = mesh
+                .positions()
+                .iter()
+                .fold([0.0; 3], |c, p| [c[0] + p[0], c[1] + p[1], c[2] + p[2]]);
+            let n = mesh.vertex_count() as f64;
+            let centre = centre.map(|c| c / n);
+            for f in mesh.faces() {
+                let [a, b, c] = f.map(|i| mesh.positions()[i as usize]);
+                let (u, w) = (
+                    [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
+                    [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+                );
+                let normal = [
+                    u[1] * w[2] - u[2] * w[1],
+                    u[2] * w[0] - u[0] * w[2],
+                    u[0] * w[1] - u[1] * w[0],
+                ];
+                let out = [a[0] - centre[0], a[1] - centre[1], a[2] - centre[2]];
+                assert!(normal[0] * out[0] + normal[1] * out[1] + normal[2] * out[2] > 0.0);
+            }
+        }
+    }
+
+    #[test]
+    fn planar_shapes_are_discs_or_annuli() {
+        let g = grid(4, 3, 2.0, 1.0);
+        assert_eq!(
+            (
+                g.vertex_count(),
+                g.face_count(),
+                g.validation().boundary_edges
+            ),
+            (20, 24, 14)
+        );
+        assert_eq!(euler(&g), 1);
+        let l = l_shape(2);
+        assert_eq!((l.vertex_count(), l.face_count()), (21, 24));
+        assert_eq!(euler(&l), 1);
+        let h = square_with_hole(1);
+        assert_eq!((h.vertex_count(), h.face_count()), (16, 16));
+        assert_eq!(euler(&h), 0);
+        for mesh in [g, l, h, random_convex_triangulation(7, 9, 25)] {
+            assert_clean(&mesh);
+        }
+    }
+
+    #[test]
+    fn random_convex_triangulation_places_its_points() {
+        let mesh = random_convex_triangulation(3, 10, 30);
+        assert_eq!(mesh.vertex_count(), 40);
+        assert_eq!(mesh.face_count(), 8 + 2 * 30);
+        assert_eq!(mesh.validation().boundary_edges, 10);
+    }
+
+    #[test]
+    fn shapes_parse_by_name() {
+        assert_eq!(
+            parse_shape("icosphere:1").map(|m| m.vertex_count()),
+            Some(42)
+        );
+        assert_eq!(parse_shape("grid:2,3").map(|m| m.face_count()), Some(12));
+        assert!(parse_shape("grid:0,3").is_none());
+        assert!(parse_shape("icosphere:99").is_none());
+        assert!(parse_shape("sphere").is_none());
+        assert!(parse_shape("cube:1").is_none());
+    }
+}

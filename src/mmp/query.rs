@@ -5,6 +5,7 @@
 use super::field::GeodesicField;
 use super::source::{PointError, SurfacePoint};
 use super::unfold::{planar_coordinates, position_in_space, Planar};
+use super::wedge::Wedge;
 use crate::mesh::{EdgeId, FaceId, VertexId};
 use crate::scalar::{Scalar, Sign};
 use std::cmp::Ordering;
@@ -72,7 +73,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     self.mesh.position(e.vertices[1]),
                     self.unfolding.length(edge),
                 );
-                if let Some(found) = self.best_through_edge(edge, face, &at) {
+                if let Some(found) = self.best_through_edge(edge, face, &at, |_| true) {
                     keep_better(&mut best, found);
                 }
             }
@@ -97,18 +98,22 @@ impl<S: Scalar> GeodesicField<'_, S> {
         best
     }
 
-    /// The best wedge on `edge` whose pseudo-source sees the point `at` (in the edge's frame,
-    /// y >= 0 towards `face`) through the wedge's range.
+    /// The best wedge on `edge`, among those `accept`ed, whose pseudo-source sees the point `at`
+    /// (in the edge's frame, y >= 0 towards `face`) through the wedge's range.
     pub(crate) fn best_through_edge(
         &self,
         edge: EdgeId,
         face: FaceId,
         at: &Planar<S>,
+        accept: impl Fn(&Wedge<S>) -> bool,
     ) -> Option<Best<S>> {
         let side = self.mesh.edge(edge).side_of(face)?;
         let length = self.unfolding.length(edge);
         let mut best = None;
         for (i, w) in self.wedges[edge.index()].iter().enumerate() {
+            if !accept(w) {
+                continue;
+            }
             let on_line = at.y.sign() == Sign::Zero;
             let same_side = w.tau.index() == side;
             let crossing = if w.source_y.sign() == Sign::Zero {

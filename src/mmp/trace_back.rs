@@ -7,7 +7,7 @@ use super::field::GeodesicField;
 use super::query::{Best, Via};
 use super::source::{PointError, SurfacePoint};
 use super::unfold::{FaceLayout, Planar};
-use super::wedge::PseudoSource;
+use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{EdgeId, FaceId, VertexId};
 use crate::scalar::{Scalar, Sign};
 use serde::Serialize;
@@ -64,6 +64,24 @@ struct Walk<S> {
     face: FaceId,
     r: Planar<S>,
     s: Planar<S>,
+    /// The mesh vertex the walk starts from, if it starts at one.
+    start: Option<VertexId>,
+}
+
+/// Where a walk goes next.
+enum Step<S> {
+    /// On through a face.
+    Walk(Walk<S>),
+    /// Through a mesh vertex, where the walk stops.
+    Vertex(VertexId),
+}
+
+/// Where a walk stopped.
+enum WalkEnd {
+    /// At the pseudo-source it was heading for.
+    PseudoSource,
+    /// At a mesh vertex on the straight way to it.
+    Vertex(VertexId),
 }
 
 impl<S: Scalar> GeodesicField<'_, S> {
@@ -78,6 +96,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         let distance = best.distance.to_f64();
         let mut simplices = vec![target];
         let mut via = best.via;
+        let mut start = None;
         let budget = 4 * self.mesh.face_count() + 16;
         for _ in 0..budget {
             let pseudo_source = match via {
@@ -90,6 +109,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                         .arrival_at_vertex(v)
                         .ok_or(TraceError::Unreachable)?
                         .via;
+                    start = Some(v);
                     continue;
                 }
                 Via::Wedge {
@@ -99,9 +119,17 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     at,
                 } => {
                     let w = &self.wedges[edge.index()][wedge];
-                    let walk = self.enter(edge, wedge, face, at, &mut simplices)?;
-                    self.walk_to(walk, w.pseudo_source, &mut simplices, budget)?;
-                    w.pseudo_source
+                    let end = match self.enter(edge, wedge, face, at, start, &mut simplices)? {
+                        Step::Walk(walk) => {
+                            self.walk_to(walk, w.pseudo_source, &mut simplices, budget)?
+                        }
+                        Step::Vertex(v) => WalkEnd::Vertex(v),
+                    };
+                    match end {
+                        WalkEnd::PseudoSource => w.pseudo_source,
+                        // The straight path runs through a mesh vertex: it goes on from there.
+                        WalkEnd::Vertex(v) => PseudoSource::Vertex(v),
+                    }
                 }
             };
             match pseudo_source {
@@ -132,9 +160,13 @@ impl<S: Scalar> GeodesicField<'_, S> {
             .position(|s| *s == SurfacePoint::Vertex(v))
     }
 
-    /// How a vertex was reached, excluding the wedges it emitted itself: wedges along its edges
-    /// that cover it, and wedges on the opposite edges of its faces that see it from beyond.
+    /// How a vertex was reached, excluding the wedges it emitted itself: wedges on the opposite
+    /// edges of its faces that see it from beyond, or, only where strictly better, wedges along
+    /// its edges that cover it (a path arriving along an edge). The first kind is preferred on
+    /// ties because the straight way back then starts inside a known face; a wedge along an edge
+    /// may cover the vertex only with the boundary ray of its range.
     pub(crate) fn arrival_at_vertex(&self, v: VertexId) -> Option<Best<S>> {
+        let own = PseudoSource::Vertex(v);
         let mut best: Option<Best<S>> = None;
         let mut consider = |found: Option<Best<S>>| {
             if let Some(found) = found {
@@ -146,6 +178,14 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 }
             }
         };
+        for &face in self.mesh.vertex_faces(v) {
+            let corner = self.mesh.face(face).iter().position(|&c| c == v)?;
+            let edge = self.mesh.face_edges(face)[(corner + 1) % 3];
+            let side = self.mesh.edge(edge).side_of(face)?;
+            let (x, y) = self.unfolding.apex(edge, side)?.clone();
+            let beyond = |w: &Wedge<S>| w.pseudo_source != own && w.tau.index() != side;
+            consider(self.best_through_edge(edge, face, &Planar { x, y }, beyond));
+        }
         for &edge in self.mesh.vertex_edges(v) {
             let e = self.mesh.edge(edge);
             let x = if e.vertices[0] == v {
@@ -154,36 +194,40 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 self.unfolding.length(edge).clone()
             };
             let at = Planar { x, y: S::zero() };
+            let arrives = |w: &Wedge<S>| w.pseudo_source != own && self.ray_enters_corner(w, &at);
             for face in e.faces.into_iter().flatten() {
-                consider(self.best_through_edge_excluding(edge, face, &at, v));
+                consider(self.best_through_edge(edge, face, &at, arrives));
             }
-        }
-        for &face in self.mesh.vertex_faces(v) {
-            let corner = self.mesh.face(face).iter().position(|&c| c == v)?;
-            let edge = self.mesh.face_edges(face)[(corner + 1) % 3];
-            let side = self.mesh.edge(edge).side_of(face)?;
-            let (x, y) = self.unfolding.apex(edge, side)?.clone();
-            consider(self.best_through_edge_excluding(edge, face, &Planar { x, y }, v));
         }
         best
     }
 
-    fn best_through_edge_excluding(
-        &self,
-        edge: EdgeId,
-        face: FaceId,
-        at: &Planar<S>,
-        v: VertexId,
-    ) -> Option<Best<S>> {
-        let best = self.best_through_edge(edge, face, at)?;
-        match &best.via {
-            Via::Wedge { wedge, .. }
-                if self.wedges[edge.index()][*wedge].pseudo_source == PseudoSource::Vertex(v) =>
-            {
-                None
-            }
-            _ => Some(best),
+    /// For a wedge on an edge ending at the vertex `at`: whether the way from the vertex to the
+    /// pseudo-source starts inside the face on the wedge's side (within its corner there). A
+    /// wedge covers its edge's end vertices only with the boundary ray of its range, which may
+    /// reach the vertex through another face. Wedges along the edge's line always qualify.
+    fn ray_enters_corner(&self, w: &Wedge<S>, at: &Planar<S>) -> bool {
+        if w.source_y.sign() == Sign::Zero {
+            return true;
         }
+        let Some((cx, h)) = self.unfolding.apex(w.edge, w.tau.index()) else {
+            return false;
+        };
+        // u runs along the edge away from the vertex, c to the apex, d to the pseudo-source.
+        let along = if at.x.sign() == Sign::Zero {
+            S::from_f64(1.0)
+        } else {
+            S::from_f64(-1.0)
+        };
+        let (cx, dx) = (cx.clone() - &at.x, w.source_x.clone() - &at.x);
+        let cross = |ax: &S, ay: &S, bx: &S, by: &S| ax.clone() * by - ay.clone() * bx;
+        let zero = S::zero();
+        let orientation = cross(&along, &zero, &cx, h).sign();
+        let u_d = cross(&along, &zero, &dx, &w.source_y).sign();
+        let d_c = cross(&dx, &w.source_y, &cx, h).sign();
+        [u_d, d_c]
+            .iter()
+            .all(|&s| s == orientation || s == Sign::Zero)
     }
 
     /// Starts the walk towards a wedge's pseudo-source from a point of `face`; if the
@@ -194,33 +238,64 @@ impl<S: Scalar> GeodesicField<'_, S> {
         wedge: usize,
         face: FaceId,
         at: Planar<S>,
+        start: Option<VertexId>,
         simplices: &mut Vec<SurfacePoint>,
-    ) -> Result<Walk<S>, TraceError> {
+    ) -> Result<Step<S>, TraceError> {
         let w = &self.wedges[edge.index()][wedge];
         let e = self.mesh.edge(edge);
         let side = e.side_of(face).expect("face of the edge");
         let s = w.source_point();
-        if w.tau.index() == side || w.source_y.sign() == Sign::Zero {
-            return Ok(Walk {
+        let lost = || TraceError::Lost {
+            near: format!("{edge}"),
+        };
+        if at.y.sign() == Sign::Zero {
+            // On the edge itself: the way to the pseudo-source starts in the face on its side.
+            let face = e.faces[w.tau.index()].ok_or_else(lost)?;
+            return Ok(Step::Walk(Walk {
                 edge,
                 face,
                 r: at,
                 s,
-            });
+                start,
+            }));
+        }
+        if w.tau.index() == side || w.source_y.sign() == Sign::Zero {
+            return Ok(Step::Walk(Walk {
+                edge,
+                face,
+                r: at,
+                s,
+                start,
+            }));
         }
         let depth = s.y.clone() + &at.y;
         let x = s.x.clone() + (at.x.clone() - &s.x) * &s.y / depth;
+        if let Some(v) = self.end_vertex(edge, &x) {
+            return Ok(Step::Vertex(v));
+        }
         let length = self.unfolding.length(edge);
         push_point(simplices, edge_point(edge, &x, length));
-        let beyond = e.faces[w.tau.index()].ok_or_else(|| TraceError::Lost {
-            near: format!("{edge}"),
-        })?;
-        Ok(Walk {
+        let beyond = e.faces[w.tau.index()].ok_or_else(lost)?;
+        Ok(Step::Walk(Walk {
             edge,
             face: beyond,
             r: Planar { x, y: S::zero() },
             s,
-        })
+            start: None,
+        }))
+    }
+
+    /// The end of `edge` at position `x`, if the backend cannot tell `x` from it.
+    fn end_vertex(&self, edge: EdgeId, x: &S) -> Option<VertexId> {
+        let length = self.unfolding.length(edge);
+        let [v0, v1] = self.mesh.edge(edge).vertices;
+        if !S::has_extent(&S::zero(), x, length) {
+            Some(v0)
+        } else if !S::has_extent(x, length, length) {
+            Some(v1)
+        } else {
+            None
+        }
     }
 
     /// Goes straight from the walk's point to the pseudo-source, face by face.
@@ -230,10 +305,10 @@ impl<S: Scalar> GeodesicField<'_, S> {
         target: PseudoSource,
         simplices: &mut Vec<SurfacePoint>,
         budget: usize,
-    ) -> Result<(), TraceError> {
+    ) -> Result<WalkEnd, TraceError> {
         for _ in 0..budget {
             if self.face_contains(walk.face, target) {
-                return Ok(());
+                return Ok(WalkEnd::PseudoSource);
             }
             let side = self
                 .mesh
@@ -257,25 +332,39 @@ impl<S: Scalar> GeodesicField<'_, S> {
             let (dx, dy) = (s.x.clone() - &r.x, s.y.clone() - &r.y);
             let cross = |ax: S, ay: S| dx.clone() * &ay - dy.clone() * &ax;
             let (cx, cy) = (layout.apex_x.clone(), -layout.apex_h.clone());
-            let turn = cross(cx.clone() - &r.x, cy.clone() - &r.y);
             let zero = S::zero();
             let one = S::from_f64(1.0);
             let clamp = |t: S| S::max_of(&zero, &S::min_of(&one, &t));
-            let (next_edge, position, along) = if turn.sign() == Sign::Positive {
-                let t = cross(zero.clone() - &r.x, zero.clone() - &r.y) / cross(cx, cy);
-                let t = clamp(-t);
-                (
-                    layout.wing.near,
-                    layout.near_position(&t),
-                    layout.to_near(&s),
-                )
-            } else {
-                let ux = layout.length.clone() - &cx;
-                let uy = zero.clone() - &cy;
-                let u = cross(r.x.clone() - &cx, r.y.clone() - &cy) / cross(ux, uy);
-                let u = clamp(u);
-                (layout.wing.far, layout.far_position(&u), layout.to_far(&s))
+            // Where the line from r to s leaves the face: by the near edge (from the edge's
+            // vertices[0] to the apex) or by the far edge (from the apex to vertices[1]).
+            let exit = |near: bool| {
+                if near {
+                    let t = clamp(cross(r.x.clone(), r.y.clone()) / cross(cx.clone(), cy.clone()));
+                    (
+                        layout.wing.near,
+                        layout.near_position(&t),
+                        layout.to_near(&s),
+                    )
+                } else {
+                    let (ux, uy) = (layout.length.clone() - &cx, zero.clone() - &cy);
+                    let u = clamp(cross(r.x.clone() - &cx, r.y.clone() - &cy) / cross(ux, uy));
+                    (layout.wing.far, layout.far_position(&u), layout.to_far(&s))
+                }
             };
+            // From a corner of the face the line leaves by the opposite side; from elsewhere,
+            // by the side the apex is on.
+            let [p0, p1] = self.mesh.edge(walk.edge).vertices;
+            let near = match walk.start {
+                Some(v) if v == p0 => false,
+                Some(v) if v == p1 => true,
+                _ => cross(cx.clone() - &r.x, cy.clone() - &r.y).sign() == Sign::Positive,
+            };
+            let chosen = exit(near);
+            let end = self.end_vertex(chosen.0, &chosen.1);
+            let (next_edge, position, along) = chosen;
+            if let Some(v) = end {
+                return Ok(WalkEnd::Vertex(v));
+            }
             push_point(
                 simplices,
                 edge_point(next_edge, &position, self.unfolding.length(next_edge)),
@@ -294,6 +383,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     x: along.x,
                     y: -along.y,
                 },
+                start: None,
             };
         }
         Err(TraceError::Lost {

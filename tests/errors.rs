@@ -1,0 +1,119 @@
+//! Bad input to the library: typed errors, never a panic.
+
+use exact_geodesics::mesh::shapes;
+use exact_geodesics::{
+    propagate, EdgeId, FaceId, MeshError, PointError, PropagateOptions, SurfacePoint, TriMesh,
+    VertexId,
+};
+
+fn triangle() -> Vec<[f64; 3]> {
+    vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]
+}
+
+#[test]
+fn non_finite_coordinates_are_refused() {
+    for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        let mut p = triangle();
+        p[1][2] = bad;
+        assert!(matches!(
+            TriMesh::new(p, vec![[0, 1, 2]]),
+            Err(MeshError::NonFiniteCoordinate { vertex: 1, .. })
+        ));
+    }
+}
+
+#[test]
+fn out_of_range_and_repeated_indices_are_refused() {
+    assert!(matches!(
+        TriMesh::new(triangle(), vec![[0, 1, 3]]),
+        Err(MeshError::VertexIndexOutOfRange {
+            face: 0,
+            index: 3,
+            ..
+        })
+    ));
+    assert!(matches!(
+        TriMesh::new(triangle(), vec![[0, 1, 1]]),
+        Err(MeshError::RepeatedVertex { face: 0, vertex: 1 })
+    ));
+}
+
+#[test]
+fn non_manifold_edges_are_refused() {
+    let mut p = triangle();
+    p.extend([[0.0, -1.0, 0.0], [0.0, 0.0, 1.0]]);
+    let err =
+        TriMesh::new(p, vec![[0, 1, 2], [1, 0, 3], [0, 1, 4]]).expect_err("three faces on 0-1");
+    assert!(
+        matches!(
+            err,
+            MeshError::NonManifoldEdge {
+                a: 0,
+                b: 1,
+                face_count: 3,
+                ..
+            }
+        ),
+        "{err}"
+    );
+}
+
+#[test]
+fn bad_sources_are_typed_errors() {
+    let mesh = shapes::cube();
+    let options = PropagateOptions::default();
+    let cases = [
+        (SurfacePoint::Vertex(VertexId(8)), "vertex"),
+        (
+            SurfacePoint::Edge {
+                edge: EdgeId(999),
+                t: 0.5,
+            },
+            "edge",
+        ),
+        (
+            SurfacePoint::Edge {
+                edge: EdgeId(0),
+                t: f64::NAN,
+            },
+            "parameter",
+        ),
+        (
+            SurfacePoint::Face {
+                face: FaceId(12),
+                bary: [1.0, 0.0, 0.0],
+            },
+            "face",
+        ),
+        (
+            SurfacePoint::Face {
+                face: FaceId(0),
+                bary: [-0.5, 1.0, 0.5],
+            },
+            "barycentric",
+        ),
+        (
+            SurfacePoint::Face {
+                face: FaceId(0),
+                bary: [0.0, 0.0, 0.0],
+            },
+            "barycentric",
+        ),
+    ];
+    for (source, what) in cases {
+        let err = propagate::<f64>(&mesh, &[source], &options).err();
+        assert!(err.is_some(), "{what}: {source:?} accepted");
+    }
+    assert_eq!(
+        propagate::<f64>(&mesh, &[], &options).err(),
+        Some(PointError::NoSource)
+    );
+    let field =
+        propagate::<f64>(&mesh, &[SurfacePoint::Vertex(VertexId(0))], &options).expect("valid");
+    assert!(field
+        .distance_at(&SurfacePoint::Vertex(VertexId(100)))
+        .is_err());
+    assert!(field
+        .trace_back(&SurfacePoint::Vertex(VertexId(100)))
+        .is_err());
+}
