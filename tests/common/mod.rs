@@ -1,0 +1,209 @@
+//! Ground truths for the engine's tests, computed independently of the engine with plain f64
+//! and the mesh's accessors only.
+#![allow(dead_code)] // Each test binary uses a different part of this module.
+
+use exact_geodesics::{TriMesh, VertexId};
+use std::collections::BinaryHeap;
+
+#[derive(PartialEq)]
+struct Entry(f64, usize);
+impl Eq for Entry {}
+impl PartialOrd for Entry {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Entry {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        other.0.total_cmp(&self.0)
+    }
+}
+
+/// Dijkstra from `source` over a graph given by its weighted adjacency.
+fn dijkstra(n: usize, source: usize, neighbours: impl Fn(usize) -> Vec<(usize, f64)>) -> Vec<f64> {
+    let mut best = vec![f64::INFINITY; n];
+    let mut heap = BinaryHeap::new();
+    best[source] = 0.0;
+    heap.push(Entry(0.0, source));
+    while let Some(Entry(d, u)) = heap.pop() {
+        if d > best[u] {
+            continue;
+        }
+        for (v, w) in neighbours(u) {
+            if d + w < best[v] {
+                best[v] = d + w;
+                heap.push(Entry(d + w, v));
+            }
+        }
+    }
+    best
+}
+
+fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
+    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+}
+
+/// Shortest paths along mesh edges from `source`: an upper bound of geodesic distance.
+pub fn edge_graph_dijkstra(mesh: &TriMesh, source: usize) -> Vec<f64> {
+    dijkstra(mesh.vertex_count(), source, |u| {
+        let u = VertexId(u as u32);
+        mesh.vertex_edges(u)
+            .iter()
+            .map(|&e| {
+                let v = mesh.edge(e).other(u).expect("incident edge");
+                (v.index(), distance(mesh.position(u), mesh.position(v)))
+            })
+            .collect()
+    })
+}
+
+type P2 = [f64; 2];
+
+fn cross(a: P2, b: P2) -> f64 {
+    a[0] * b[1] - a[1] * b[0]
+}
+
+/// Places `c` in the plane given the placements `pa`, `pb` of `a`, `b`, on the side of line
+/// `pa pb` opposite to `away` (or on its left if `away` is `None`).
+fn unfold(mesh: &TriMesh, a: usize, b: usize, c: usize, pa: P2, pb: P2, away: Option<P2>) -> P2 {
+    let p = |v: usize| mesh.position(VertexId(v as u32));
+    let (l, ac, bc) = (
+        distance(p(a), p(b)),
+        distance(p(a), p(c)),
+        distance(p(b), p(c)),
+    );
+    let x = (l * l + ac * ac - bc * bc) / (2.0 * l);
+    let h = (ac * ac - x * x).max(0.0).sqrt();
+    let u = [(pb[0] - pa[0]) / l, (pb[1] - pa[1]) / l];
+    let n = [-u[1], u[0]];
+    let left = [pa[0] + x * u[0] + h * n[0], pa[1] + x * u[1] + h * n[1]];
+    let right = [pa[0] + x * u[0] - h * n[0], pa[1] + x * u[1] - h * n[1]];
+    match away {
+        Some(o) if cross([pb[0] - pa[0], pb[1] - pa[1]], [o[0] - pa[0], o[1] - pa[1]]) > 0.0 => {
+            right
+        }
+        _ => left,
+    }
+}
+
+/// Straight segments from vertex `u` to every vertex it sees within an unfolded strip of at most
+/// `max_faces` faces: `(target, length)`.
+fn straight_segments(mesh: &TriMesh, u: usize, max_faces: usize) -> Vec<(usize, f64)> {
+    const SLACK: f64 = 1e-12;
+    let mut found = Vec::new();
+    // A strip's last face: corners, their placements, the edge it was entered by, and the cone
+    // of directions from u (at the origin) that cross every edge so far.
+    struct State {
+        face: usize,
+        corners: [usize; 3],
+        placed: [P2; 3],
+        entry: Option<(usize, usize)>,
+        cone: (P2, P2),
+        depth: usize,
+    }
+    let mut stack = Vec::new();
+    for &f in mesh.vertex_faces(VertexId(u as u32)) {
+        let c = mesh.faces()[f.index()].map(|v| v as usize);
+        let k = c.iter().position(|&v| v == u).expect("corner");
+        let (a, b) = (c[(k + 1) % 3], c[(k + 2) % 3]);
+        let pu = [0.0, 0.0];
+        let pa = [
+            distance(
+                mesh.position(VertexId(u as u32)),
+                mesh.position(VertexId(a as u32)),
+            ),
+            0.0,
+        ];
+        let pb = unfold(mesh, u, a, b, pu, pa, None);
+        stack.push(State {
+            face: f.index(),
+            corners: [u, a, b],
+            placed: [pu, pa, pb],
+            entry: None,
+            cone: (pa, pb),
+            depth: 1,
+        });
+    }
+    while let Some(s) = stack.pop() {
+        let (lo, hi) = s.cone;
+        for i in 0..3 {
+            let w = s.corners[i];
+            let d = s.placed[i];
+            let norm = (d[0] * d[0] + d[1] * d[1]).sqrt();
+            if w != u && norm > 0.0 {
+                let scale = norm * (lo[0].hypot(lo[1]) + hi[0].hypot(hi[1]));
+                if cross(lo, d) >= -SLACK * scale && cross(d, hi) >= -SLACK * scale {
+                    found.push((w, norm));
+                }
+            }
+        }
+        if s.depth == max_faces {
+            continue;
+        }
+        for i in 0..3 {
+            let (a, b) = (s.corners[i], s.corners[(i + 1) % 3]);
+            if a == u || b == u || s.entry == Some((a.min(b), a.max(b))) {
+                continue;
+            }
+            let (mut pa, mut pb) = (s.placed[i], s.placed[(i + 1) % 3]);
+            if cross(pa, pb) < 0.0 {
+                std::mem::swap(&mut pa, &mut pb);
+            }
+            let new_lo = if cross(lo, pa) > 0.0 { pa } else { lo };
+            let new_hi = if cross(pb, hi) > 0.0 { pb } else { hi };
+            let width = new_lo[0].hypot(new_lo[1]) * new_hi[0].hypot(new_hi[1]);
+            if cross(new_lo, new_hi) <= SLACK * width {
+                continue;
+            }
+            let edge = mesh
+                .edge_between(VertexId(a as u32), VertexId(b as u32))
+                .expect("face edge");
+            let Some(next) = mesh
+                .edge(edge)
+                .faces
+                .into_iter()
+                .flatten()
+                .find(|f| f.index() != s.face)
+            else {
+                continue;
+            };
+            let c = mesh.faces()[next.index()].map(|v| v as usize);
+            let apex = *c.iter().find(|&&v| v != a && v != b).expect("apex");
+            let opposite = s.placed[(i + 2) % 3];
+            let (qa, qb) = (s.placed[i], s.placed[(i + 1) % 3]);
+            let pc = unfold(
+                mesh,
+                s.corners[i],
+                s.corners[(i + 1) % 3],
+                apex,
+                qa,
+                qb,
+                Some(opposite),
+            );
+            stack.push(State {
+                face: next.index(),
+                corners: [s.corners[i], s.corners[(i + 1) % 3], apex],
+                placed: [qa, qb, pc],
+                entry: Some((a.min(b), a.max(b))),
+                cone: (new_lo, new_hi),
+                depth: s.depth + 1,
+            });
+        }
+    }
+    found
+}
+
+/// The exact geodesic distance between two vertices of a small mesh, by exhaustive search:
+/// straight segments between vertices in every unfolding of up to `max_faces` faces (a geodesic
+/// is such segments joined at vertices), then Dijkstra over them.
+pub fn brute_force_vertex_distance(
+    mesh: &TriMesh,
+    source: usize,
+    target: usize,
+    max_faces: usize,
+) -> f64 {
+    let segments: Vec<Vec<(usize, f64)>> = (0..mesh.vertex_count())
+        .map(|u| straight_segments(mesh, u, max_faces))
+        .collect();
+    dijkstra(mesh.vertex_count(), source, |u| segments[u].clone())[target]
+}
