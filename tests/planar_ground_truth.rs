@@ -65,6 +65,31 @@ fn convex_planar_triangulations_give_straight_line_distances() {
 }
 
 #[test]
+fn several_sources_split_the_plane_by_their_bisector() {
+    let mesh = shapes::grid(10, 10, 1.0, 1.0);
+    let sources = [
+        SurfacePoint::Vertex(VertexId(0)),
+        SurfacePoint::Vertex(VertexId(120)),
+    ];
+    let field = propagate::<f64>(&mesh, &sources, &PropagateOptions::default()).expect("valid");
+    let mut rng = SplitMix64::new(5);
+    for _ in 0..50 {
+        let q = random_face_point(&mesh, &mut rng);
+        let p = q.position(&mesh);
+        let (d0, d1) = (dist2(p, [0.0; 3]), dist2(p, [1.0, 1.0, 0.0]));
+        assert_close(
+            field.distance_at(&q).expect("valid"),
+            d0.min(d1),
+            "two sources",
+        );
+        if (d0 - d1).abs() > 1e-9 {
+            let nearest = field.nearest_source_at(&q).expect("valid");
+            assert_eq!(nearest, Some(usize::from(d1 < d0)), "{q:?}");
+        }
+    }
+}
+
+#[test]
 fn regular_grid_from_an_edge_point_gives_straight_line_distances() {
     let mesh = shapes::grid(8, 5, 2.0, 1.25);
     let source = SurfacePoint::on_edge(&mesh, 10, 11, 0.3).expect("an edge of the grid");

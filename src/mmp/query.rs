@@ -54,6 +54,19 @@ impl<S: Scalar> GeodesicField<'_, S> {
             .map_or(f64::INFINITY, |b| b.distance.to_f64()))
     }
 
+    /// Index (into [`sources`](Self::sources)) of the source nearest to any surface point;
+    /// `None` if no source reaches it.
+    ///
+    /// # Errors
+    /// [`PointError`] if the point is not a point of the mesh.
+    pub fn nearest_source_at(&self, point: &SurfacePoint) -> Result<Option<usize>, PointError> {
+        let point = point.validated(self.mesh)?;
+        Ok(self.best_at(&point).and_then(|b| match b.via {
+            Via::Wedge { edge, wedge, .. } => Some(self.wedges[edge.index()][wedge].source),
+            Via::Vertex(v) => self.nearest_source(v),
+        }))
+    }
+
     /// The best way to reach a point in canonical form.
     pub(crate) fn best_at(&self, point: &SurfacePoint) -> Option<Best<S>> {
         if let SurfacePoint::Vertex(v) = *point {
