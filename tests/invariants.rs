@@ -6,7 +6,7 @@ mod common;
 
 use exact_geodesics::mesh::shapes::{self, SplitMix64};
 use exact_geodesics::{
-    propagate, FaceId, GeodesicField, PropagateOptions, SurfacePoint, TriMesh, VertexId,
+    propagate, GeodesicField, PropagateOptions, SurfacePoint, TriMesh, VertexId,
 };
 use proptest::prelude::*;
 
@@ -56,17 +56,7 @@ fn random_point(mesh: &TriMesh, rng: &mut SplitMix64) -> SurfacePoint {
             (rng.next_u64() % mesh.vertex_count() as u64) as u32,
         ));
     }
-    let face = FaceId((rng.next_u64() % mesh.face_count() as u64) as u32);
-    let (u, v) = (rng.next_f64(), rng.next_f64());
-    let (u, v) = if u + v > 1.0 {
-        (1.0 - u, 1.0 - v)
-    } else {
-        (u, v)
-    };
-    SurfacePoint::Face {
-        face,
-        bary: [1.0 - u - v, u, v],
-    }
+    common::random_face_point(mesh, rng)
 }
 
 fn field_from(mesh: &TriMesh, p: SurfacePoint) -> GeodesicField<'_, f64> {

@@ -1,8 +1,11 @@
 //! Known answers on planar meshes: the geodesic is the straight segment on convex domains, and
 //! bends at reflex corners on non-convex ones (ground truth by a visibility graph).
 
+mod common;
+
+use common::random_face_point;
 use exact_geodesics::mesh::shapes::{self, SplitMix64};
-use exact_geodesics::{propagate, FaceId, PropagateOptions, SurfacePoint, TriMesh, VertexId};
+use exact_geodesics::{propagate, PropagateOptions, SurfacePoint, VertexId};
 
 fn dist2(a: [f64; 3], b: [f64; 3]) -> f64 {
     ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
@@ -13,20 +16,6 @@ fn assert_close(got: f64, want: f64, what: &str) {
         (got - want).abs() <= 1e-9 * want.max(1.0),
         "{what}: got {got}, want {want}"
     );
-}
-
-fn random_face_point(mesh: &TriMesh, rng: &mut SplitMix64) -> SurfacePoint {
-    let face = FaceId((rng.next_u64() % mesh.face_count() as u64) as u32);
-    let (u, v) = (rng.next_f64(), rng.next_f64());
-    let (u, v) = if u + v > 1.0 {
-        (1.0 - u, 1.0 - v)
-    } else {
-        (u, v)
-    };
-    SurfacePoint::Face {
-        face,
-        bary: [1.0 - u - v, u, v],
-    }
 }
 
 #[test]

@@ -2,7 +2,8 @@
 //! and the mesh's accessors only.
 #![allow(dead_code)] // Each test binary uses a different part of this module.
 
-use exact_geodesics::{TriMesh, VertexId};
+use exact_geodesics::mesh::shapes::SplitMix64;
+use exact_geodesics::{FaceId, SurfacePoint, TriMesh, VertexId};
 use std::collections::BinaryHeap;
 
 #[derive(PartialEq)]
@@ -206,4 +207,19 @@ pub fn brute_force_vertex_distance(
         .map(|u| straight_segments(mesh, u, max_faces))
         .collect();
     dijkstra(mesh.vertex_count(), source, |u| segments[u].clone())[target]
+}
+
+/// A uniformly random point of a uniformly random face.
+pub fn random_face_point(mesh: &TriMesh, rng: &mut SplitMix64) -> SurfacePoint {
+    let face = FaceId((rng.next_u64() % mesh.face_count() as u64) as u32);
+    let (u, v) = (rng.next_f64(), rng.next_f64());
+    let (u, v) = if u + v > 1.0 {
+        (1.0 - u, 1.0 - v)
+    } else {
+        (u, v)
+    };
+    SurfacePoint::Face {
+        face,
+        bary: [1.0 - u - v, u, v],
+    }
 }
