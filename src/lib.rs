@@ -4,10 +4,10 @@
 //! the wedge ("window") form of Surazhsky et al., generic over the number type.
 //!
 //! References, cited by key throughout the docs:
-//! - [LZT] Liu, Zhang, Tang, *Some properties of exact geodesics on triangular mesh surfaces*.
-//! - [SSK+05] Surazhsky, Surazhsky, Kirsanov, Gortler, Hoppe, *Fast exact and approximate
+//! - \[LZT\] Liu, Zhang, Tang, *Some properties of exact geodesics on triangular mesh surfaces*.
+//! - \[SSK+05\] Surazhsky, Surazhsky, Kirsanov, Gortler, Hoppe, *Fast exact and approximate
 //!   geodesics on meshes*, SIGGRAPH 2005.
-//! - [MMP87] Mitchell, Mount, Papadimitriou, *The discrete geodesic problem*, SIAM J. Comput. 1987.
+//! - \[MMP87\] Mitchell, Mount, Papadimitriou, *The discrete geodesic problem*, SIAM J. Comput. 1987.
 #![forbid(unsafe_code)]
 #![deny(missing_docs, rustdoc::broken_intra_doc_links)]
 

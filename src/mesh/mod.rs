@@ -169,7 +169,7 @@ impl TriMesh {
         self.topology.angle_sum[v.index()]
     }
 
-    /// Whether geodesics may bend at the vertex, so that it must act as a pseudo-source [MMP87]:
+    /// Whether geodesics may bend at the vertex, so that it must act as a pseudo-source \[MMP87\]:
     /// boundary and bowtie vertices, and vertices whose angle sum is at least 2 pi (saddles and,
     /// to be safe under rounding, flat ones). Over-approximating costs wedges, never correctness:
     /// a path through any vertex is a path on the surface.

@@ -37,6 +37,9 @@ fn build(positions: Vec<[f64; 3]>, faces: Vec<[u32; 3]>) -> TriMesh {
 
 /// A planar `nx` by `ny` grid of `width` by `height` in z = 0, vertices row by row from the origin,
 /// each cell split along its diagonal from lower left to upper right.
+///
+/// `(nx + 1) * (ny + 1)` vertices (vertex `j * (nx + 1) + i` at column `i`, row `j`) and
+/// `2 * nx * ny` counter-clockwise faces. A zero count is taken as one cell.
 pub fn grid(nx: usize, ny: usize, width: f64, height: f64) -> TriMesh {
     let (nx, ny) = (nx.max(1), ny.max(1));
     let mut positions = Vec::with_capacity((nx + 1) * (ny + 1));
@@ -110,6 +113,12 @@ pub fn square_with_hole(n: usize) -> TriMesh {
 /// A random convex polygon in z = 0 (`boundary` corners on a jittered ellipse), fanned into
 /// triangles, with `interior` random points each inserted by splitting the triangle containing
 /// it into three. Points that would make a triangle too thin are skipped.
+///
+/// The boundary corners come first, counter-clockwise (at least 3: smaller counts are raised),
+/// then the interior points in insertion order. Corners sit at sorted, jittered angles on an
+/// ellipse, so the polygon stays strictly convex. A point is kept only if each of its barycentric
+/// coordinates in the containing triangle exceeds 0.02; after `100 * (interior + 1)` draws the
+/// generator gives up, so fewer than `interior` points may be placed (rare in practice).
 pub fn random_convex_triangulation(seed: u64, boundary: usize, interior: usize) -> TriMesh {
     let mut rng = SplitMix64::new(seed);
     let boundary = boundary.max(3);
@@ -496,5 +505,167 @@ mod tests {
         assert!(parse_shape("icosphere:99").is_none());
         assert!(parse_shape("sphere").is_none());
         assert!(parse_shape("cube:1").is_none());
+    }
+
+    fn corners(mesh: &TriMesh, f: &[u32; 3]) -> [[f64; 3]; 3] {
+        f.map(|i| mesh.positions()[i as usize])
+    }
+
+    /// Six times the signed volume a closed mesh encloses: positive when its faces are
+    /// counter-clockwise seen from outside, whatever its shape (the centroid test above needs
+    /// star-shaped meshes).
+    fn signed_volume6(mesh: &TriMesh) -> f64 {
+        mesh.faces()
+            .iter()
+            .map(|f| {
+                let [a, b, c] = corners(mesh, f);
+                a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+                    + a[2] * (b[0] * c[1] - b[1] * c[0])
+            })
+            .sum()
+    }
+
+    /// Twice the signed area of a face's projection on z = 0.
+    fn planar_area2(mesh: &TriMesh, f: &[u32; 3]) -> f64 {
+        let [a, b, c] = corners(mesh, f);
+        (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    }
+
+    #[test]
+    fn closed_shapes_enclose_positive_volume() {
+        for (mesh, volume) in [
+            (tetrahedron(), 8.0 / 3.0),
+            (cube(), 1.0),
+            (octahedron(), 4.0 / 3.0),
+            (paper_example4(), f64::NAN),
+            (icosahedron(), f64::NAN),
+            (icosphere(3), f64::NAN),
+        ] {
+            let v = signed_volume6(&mesh) / 6.0;
+            assert!(v > 0.0, "{v}");
+            if volume.is_finite() {
+                assert!((v - volume).abs() < 1e-12, "{v} != {volume}");
+            }
+        }
+        // The icosphere approaches the ball from inside.
+        let v = signed_volume6(&icosphere(4)) / 6.0;
+        let ball = 4.0 / 3.0 * std::f64::consts::PI;
+        assert!(v < ball && v > 0.99 * ball, "{v}");
+    }
+
+    #[test]
+    fn icospheres_are_closed_on_the_unit_sphere() {
+        for k in 0..4u32 {
+            let mesh = icosphere(k);
+            let faces = 20 * 4usize.pow(k);
+            assert_eq!(mesh.vertex_count(), faces / 2 + 2);
+            assert_eq!(mesh.face_count(), faces);
+            assert_eq!(mesh.edge_count(), 3 * faces / 2);
+            assert_eq!(mesh.validation().boundary_edges, 0);
+            assert_eq!(euler(&mesh), 2);
+            assert_clean(&mesh);
+            for p in mesh.positions() {
+                let r = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
+                assert!((r - 1.0).abs() < 1e-14, "{r}");
+            }
+        }
+        assert_eq!(icosphere(0).faces(), icosahedron().faces());
+    }
+
+    #[test]
+    fn planar_shapes_have_their_boundaries() {
+        // Boundary edges: perimeter in cells. The L has perimeter 8, the holed square 12 + 4.
+        for (mesh, boundary) in [
+            (grid(4, 3, 2.0, 1.0), 14),
+            (grid(1, 1, 1.0, 1.0), 4),
+            (l_shape(1), 8),
+            (l_shape(3), 24),
+            (square_with_hole(1), 16),
+            (square_with_hole(2), 32),
+            (random_convex_triangulation(1, 12, 40), 12),
+        ] {
+            assert_eq!(mesh.validation().boundary_edges, boundary);
+            assert_clean(&mesh);
+        }
+        let h = square_with_hole(2);
+        assert_eq!((h.vertex_count(), h.face_count()), (48, 64));
+        assert_eq!(euler(&h), 0);
+        let l = l_shape(3);
+        assert_eq!((l.vertex_count(), l.face_count()), (40, 54));
+        assert_eq!(euler(&l), 1);
+    }
+
+    #[test]
+    fn planar_shapes_face_up_and_lie_in_z0() {
+        for mesh in [
+            grid(5, 2, 3.0, 0.5),
+            l_shape(2),
+            square_with_hole(2),
+            random_convex_triangulation(5, 9, 30),
+        ] {
+            assert!(mesh.positions().iter().all(|p| p[2] == 0.0));
+            for f in mesh.faces() {
+                assert!(planar_area2(&mesh, f) > 0.0);
+            }
+        }
+        // The grid's corners and its row-major order.
+        let g = grid(4, 3, 2.0, 1.5);
+        assert_eq!(g.positions()[0], [0.0, 0.0, 0.0]);
+        assert_eq!(g.positions()[4], [2.0, 0.0, 0.0]);
+        assert_eq!(g.positions()[5], [0.0, 0.5, 0.0]);
+        assert_eq!(g.positions()[19], [2.0, 1.5, 0.0]);
+        // The reflex corner of the L and the hole's corners are vertices.
+        let has = |mesh: &TriMesh, p: [f64; 3]| mesh.positions().contains(&p);
+        assert!(has(&l_shape(3), [1.0, 1.0, 0.0]));
+        assert!(!has(&l_shape(3), [2.0, 2.0, 0.0]));
+        for p in [
+            [1.0, 1.0, 0.0],
+            [2.0, 1.0, 0.0],
+            [1.0, 2.0, 0.0],
+            [2.0, 2.0, 0.0],
+        ] {
+            assert!(has(&square_with_hole(2), p));
+        }
+        assert!(!has(&square_with_hole(2), [1.5, 1.5, 0.0]));
+    }
+
+    #[test]
+    fn random_convex_polygons_are_convex_with_points_inside() {
+        for seed in 0..20 {
+            let (b, i) = (3 + seed as usize % 10, 15);
+            let mesh = random_convex_triangulation(seed, b, i);
+            let p = mesh.positions();
+            // Every boundary corner turns left.
+            for k in 0..b {
+                let (a, c, d) = (p[k], p[(k + 1) % b], p[(k + 2) % b]);
+                let turn = (c[0] - a[0]) * (d[1] - a[1]) - (c[1] - a[1]) * (d[0] - a[0]);
+                assert!(turn > 0.0, "seed {seed}: corner {k}");
+            }
+            // Interior points are strictly inside: left of every boundary edge.
+            for q in &p[b..] {
+                for k in 0..b {
+                    let (a, c) = (p[k], p[(k + 1) % b]);
+                    let side = (c[0] - a[0]) * (q[1] - a[1]) - (c[1] - a[1]) * (q[0] - a[0]);
+                    assert!(side > 0.0, "seed {seed}");
+                }
+            }
+            assert_eq!(mesh.face_count(), b - 2 + 2 * (mesh.vertex_count() - b));
+            assert_eq!(mesh.validation().boundary_edges, b);
+            assert_eq!(euler(&mesh), 1);
+            assert_clean(&mesh);
+        }
+    }
+
+    #[test]
+    fn paper_example4_keeps_the_printed_order() {
+        let mesh = paper_example4();
+        assert_eq!(mesh.positions()[0], [0.0, 0.0, 0.0]);
+        assert_eq!(mesh.positions()[2], [1.0, 1.0, 0.0]);
+        assert_eq!(mesh.positions()[8], [0.5, -1.8, 0.5]);
+        assert_eq!(mesh.positions()[13], [0.5, 0.5, 2.8]);
+        assert_eq!(mesh.faces()[0], [0, 3, 8]);
+        assert_eq!(mesh.faces()[4], [1, 0, 9]);
+        assert_eq!(mesh.faces()[20], [5, 4, 13]);
+        assert_eq!(mesh.faces()[23], [4, 7, 13]);
     }
 }

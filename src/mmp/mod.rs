@@ -1,4 +1,4 @@
-//! The MMP engine in the wedge form of Surazhsky et al. [SSK+05], as described in [LZT §2]:
+//! The MMP engine in the wedge form of Surazhsky et al. \[SSK+05\], as described in [LZT §2]:
 //! wedges are propagated across faces in continuous-Dijkstra order; where wedges meet on an edge
 //! they are intersected by solving eq. (2) (Section 4); the final wedges on the edges induce the
 //! subdivision from which distances are read and paths traced back (Section 2).

@@ -93,6 +93,9 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     Ok(engine.finish(sources))
 }
 
+/// A wedge about to be born on an edge: the edge, its range, its pseudo-source there.
+type Child<S> = (EdgeId, S, S, Planar<S>);
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum SlotState {
     Queued,
@@ -423,7 +426,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let zero = S::zero();
         let one = S::from_f64(1.0);
         let clamp = |t: S| S::max_of(&zero, &S::min_of(&one, &t));
-        let mut children: [Option<(EdgeId, S, S, Planar<S>)>; 2] = [None, None];
+        let mut children: [Option<Child<S>>; 2] = [None, None];
         if w.b0.compare(&shadow) == Ordering::Less {
             let t0 = clamp(layout.near_hit(&s, &w.b0));
             let t1 = if w.b1.compare(&shadow) == Ordering::Less {

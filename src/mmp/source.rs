@@ -137,7 +137,7 @@ impl SurfacePoint {
             }
             SurfacePoint::Face { face, bary } => {
                 let sum: f64 = bary.iter().sum();
-                if bary.iter().any(|b| !b.is_finite() || *b < 0.0) || !(sum > 0.0) {
+                if bary.iter().any(|b| !b.is_finite() || *b < 0.0) || sum <= 0.0 {
                     return Err(PointError::Barycentric { bary });
                 }
                 let bary = bary.map(|b| b / sum);
@@ -186,7 +186,7 @@ impl SurfacePoint {
     }
 
     /// The faces that contain the point (one, two, or a vertex's star).
-    pub fn faces<'m>(&self, mesh: &'m TriMesh) -> Vec<FaceId> {
+    pub fn faces(&self, mesh: &TriMesh) -> Vec<FaceId> {
         match *self {
             SurfacePoint::Vertex(v) => mesh.vertex_faces(v).to_vec(),
             SurfacePoint::Edge { edge, .. } => {

@@ -45,7 +45,7 @@ impl Side {
 }
 
 /// Where a wedge's geodesics come from: a source itself, or a mesh vertex that acts as a
-/// pseudo-source (a saddle or boundary vertex [MMP87]).
+/// pseudo-source (a saddle or boundary vertex \[MMP87\]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
 pub enum PseudoSource {
     /// The source with this index in the list passed to the propagation.

@@ -89,6 +89,11 @@ fn unfold(mesh: &TriMesh, a: usize, b: usize, c: usize, pa: P2, pb: P2, away: Op
 
 /// Straight segments from vertex `u` to every vertex it sees within an unfolded strip of at most
 /// `max_faces` faces: `(target, length)`.
+///
+/// Depth-first over strips, keeping the cone of directions from u that cross every edge so far
+/// and stopping when it is empty. The slack only admits segments that graze a vertex of a crossed
+/// edge; those are still paths on the surface (two segments joined at that vertex), so the
+/// result never undercuts the true distance.
 fn straight_segments(mesh: &TriMesh, u: usize, max_faces: usize) -> Vec<(usize, f64)> {
     const SLACK: f64 = 1e-12;
     let mut found = Vec::new();
@@ -143,6 +148,9 @@ fn straight_segments(mesh: &TriMesh, u: usize, max_faces: usize) -> Vec<(usize, 
         }
         for i in 0..3 {
             let (a, b) = (s.corners[i], s.corners[(i + 1) % 3]);
+            // A shortest path from u never crosses an edge at u transversally (following the
+            // edge to the crossing point would be no longer, and would make the path bend
+            // inside an edge), so strips that come back around u can stop there.
             if a == u || b == u || s.entry == Some((a.min(b), a.max(b))) {
                 continue;
             }
@@ -203,10 +211,29 @@ pub fn brute_force_vertex_distance(
     target: usize,
     max_faces: usize,
 ) -> f64 {
+    brute_force_vertex_distances(mesh, source, max_faces)[target]
+}
+
+/// [`brute_force_vertex_distance`] from `source` to every vertex at once (the segment search is
+/// the expensive part and does not depend on the target); `f64::INFINITY` when unreachable.
+///
+/// Exact as soon as `max_faces` is at least the number of faces any straight piece of a
+/// geodesic crosses; with a smaller bound it is still an upper bound (every path it finds lies
+/// on the surface), never below the true distance.
+pub fn brute_force_vertex_distances(mesh: &TriMesh, source: usize, max_faces: usize) -> Vec<f64> {
     let segments: Vec<Vec<(usize, f64)>> = (0..mesh.vertex_count())
         .map(|u| straight_segments(mesh, u, max_faces))
         .collect();
-    dijkstra(mesh.vertex_count(), source, |u| segments[u].clone())[target]
+    dijkstra(mesh.vertex_count(), source, |u| segments[u].clone())
+}
+
+/// The straight-line distance between two vertices: the geodesic distance on a planar convex
+/// mesh, where the segment between any two points stays on the surface.
+pub fn planar_straight_distance(mesh: &TriMesh, a: usize, b: usize) -> f64 {
+    distance(
+        mesh.position(VertexId(a as u32)),
+        mesh.position(VertexId(b as u32)),
+    )
 }
 
 /// A uniformly random point of a uniformly random face.

@@ -1,1 +1,163 @@
-fn main() {}
+//! `exact-geodesics`: exact geodesic distances, paths and wedges on triangle meshes.
+//!
+//! The only part of the crate that prints. Errors go to stderr with exit code 1 (2 for usage).
+
+mod distance;
+mod load;
+mod path;
+mod progress;
+mod spec;
+mod stats;
+mod wedges;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use exact_geodesics::{
+    propagate_with_progress, GeodesicField, PropagateOptions, Scalar, SurfacePoint, TriMesh,
+};
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "exact-geodesics",
+    version,
+    about = "Exact geodesics on triangle meshes (MMP in wedge form)"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Geodesic distance of every vertex to the nearest source (CSV: vertex,distance,source).
+    Distance(distance::DistanceArgs),
+    /// The shortest path from a target back to its nearest source.
+    Path(path::PathArgs),
+    /// The final wedges on an edge, on a face's edges, or on every edge, as 7-tuples
+    /// (b0, b1, d0, d1, tau, s, sigma) [LZT Example 4].
+    Wedges(wedges::WedgesArgs),
+    /// Counters and timings of one propagation, as JSON.
+    Stats(stats::StatsArgs),
+}
+
+/// The number type the engine runs on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Backend {
+    /// Hardware floating point with the documented tolerance policy.
+    F64,
+}
+
+/// Arguments every command shares: the mesh, the sources, the backend.
+#[derive(Args)]
+pub struct Common {
+    /// Mesh file (OBJ, OFF, PLY) or a generated mesh `gen:SHAPE` (e.g. gen:icosphere:3).
+    pub mesh: String,
+    /// A source: v:I (vertex), e:A,B,T (point at T from A to B), f:F,U,V,W (barycentric in face F).
+    #[arg(long = "source", required = true)]
+    pub sources: Vec<String>,
+    /// Number type of the engine.
+    #[arg(long, value_enum, default_value_t = Backend::F64)]
+    pub backend: Backend,
+    /// Stop propagating at this distance; farther vertices are reported unreachable (inf).
+    #[arg(long)]
+    pub max_distance: Option<f64>,
+    /// Split polygons with more than three corners into triangles instead of refusing them.
+    #[arg(long)]
+    pub triangulate: bool,
+}
+
+/// A loaded mesh with parsed sources, ready to propagate.
+pub struct Job {
+    mesh: TriMesh,
+    sources: Vec<SurfacePoint>,
+    options: PropagateOptions,
+    backend: Backend,
+}
+
+impl Common {
+    fn job(&self) -> Result<Job, String> {
+        let mesh = load::load_mesh(&self.mesh, self.triangulate)?;
+        let sources = self
+            .sources
+            .iter()
+            .map(|s| spec::parse_point(&mesh, s))
+            .collect::<Result<Vec<_>, _>>()?;
+        if let Some(d) = self.max_distance {
+            if d.is_nan() || d < 0.0 {
+                return Err(format!(
+                    "--max-distance must be a non-negative number, got {d}"
+                ));
+            }
+        }
+        Ok(Job {
+            mesh,
+            sources,
+            options: PropagateOptions {
+                max_distance: self.max_distance,
+            },
+            backend: self.backend,
+        })
+    }
+}
+
+impl Job {
+    /// Propagates with the chosen backend, showing progress on a terminal.
+    fn field<S: Scalar>(&self) -> Result<GeodesicField<'_, S>, String> {
+        let bar = progress::bar(self.mesh.vertex_count());
+        let field = propagate_with_progress(&self.mesh, &self.sources, &self.options, |p| {
+            progress::update(&bar, p)
+        })
+        .map_err(|e| e.to_string())?;
+        bar.finish_and_clear();
+        Ok(field)
+    }
+}
+
+/// Runs `$body` with `$s` bound to the number type of `$backend`.
+macro_rules! with_backend {
+    ($backend:expr, $s:ident => $body:expr) => {
+        match $backend {
+            Backend::F64 => {
+                type $s = f64;
+                $body
+            }
+        }
+    };
+}
+pub(crate) use with_backend;
+
+/// Writes a command's output to `--out` or stdout.
+pub fn emit(out: Option<&PathBuf>, text: &str) -> Result<(), String> {
+    match out {
+        Some(path) => std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display())),
+        None => {
+            let mut stdout = std::io::stdout().lock();
+            match stdout
+                .write_all(text.as_bytes())
+                .and_then(|_| stdout.flush())
+            {
+                Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(format!("stdout: {e}")),
+                _ => Ok(()),
+            }
+        }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match &cli.command {
+        Command::Distance(args) => distance::run(args),
+        Command::Path(args) => path::run(args),
+        Command::Wedges(args) => wedges::run(args),
+        Command::Stats(args) => stats::run(args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}

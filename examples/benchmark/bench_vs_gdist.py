@@ -1,0 +1,450 @@
+#!/usr/bin/env python3
+"""Benchmark the exact-geodesics CLI against gdist (Kirsanov's exact MMP).
+
+For every model (an OBJ file in ../shared/models, relative to the repository)
+and one source vertex, this runs three fresh processes:
+
+1. gdist_worker.py in the venv made by setup_venv.sh: one
+   ``gdist.compute_gdist`` call, timed inside the worker;
+2. ``exact-geodesics stats MODEL --source v:S``: a JSON object whose
+   ``propagation_seconds``, ``wedges`` and ``wedge_memory_bytes`` are read;
+3. ``exact-geodesics distance MODEL --source v:S --format csv``: the distance
+   of every vertex, compared with gdist's.
+
+The peak RSS and the wall time of each child are measured with ``os.wait4``.
+Results go to OUT/benchmark.json and OUT/benchmark.csv (rewritten after each
+model), a table goes to stdout, progress to stderr. The exit status is 0 when
+every run succeeded (whatever the timings and differences), 1 when some run
+failed (the failures are recorded per model), 2 on a setup error. Without the
+models folder the script says so and exits 0.
+
+Runs under the system python3 or the venv's; needs only the standard library.
+"""
+
+import argparse
+import csv
+import json
+import math
+import os
+import platform
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from datetime import datetime, timezone
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parents[1]
+WORKER = HERE / "gdist_worker.py"
+DEFAULT_MODELS_DIR = REPO.parent / "shared" / "models"
+DEFAULT_BINARY = REPO / "target" / "release" / "exact-geodesics"
+DEFAULT_VENV_PYTHON = REPO / ".venv" / "bin" / "python"
+DEFAULT_OUT = REPO / "bench-results"
+MIB = 1024 * 1024
+
+# Columns of benchmark.csv, in order; every per-model result has these keys.
+CSV_COLUMNS = [
+    "model",
+    "vertices",
+    "faces",
+    "source",
+    "ours_propagation_seconds",
+    "gdist_cpu_seconds",
+    "gdist_wall_seconds",
+    "ratio_ours_over_gdist",
+    "ours_wedges",
+    "ours_wedge_memory_bytes",
+    "ours_stats_wall_seconds",
+    "ours_stats_peak_rss_bytes",
+    "ours_distance_wall_seconds",
+    "ours_distance_peak_rss_bytes",
+    "gdist_peak_rss_bytes",
+    "gdist_rss_before_bytes",
+    "gdist_rss_increase_bytes",
+    "ours_reached",
+    "gdist_reached",
+    "finite_in_both",
+    "finite_ours_only",
+    "finite_gdist_only",
+    "max_abs_diff",
+    "max_abs_diff_vertex",
+    "max_rel_diff",
+    "errors",
+]
+
+
+class SetupError(Exception):
+    """The benchmark cannot run at all (missing venv, binary, model...)."""
+
+
+class RunError(Exception):
+    """One measured run failed; recorded for its model, the benchmark goes on."""
+
+
+def log(message):
+    """Print a progress line on stderr."""
+    print(message, file=sys.stderr, flush=True)
+
+
+def run_measured(cmd, stdout_path, timeout):
+    """Run ``cmd`` with stdout into ``stdout_path``; measure wall time and peak RSS.
+
+    The child runs in its own process group, killed whole on timeout or when
+    the harness is interrupted. Returns ``(wall_seconds, peak_rss_bytes)``.
+    Raises RunError when the command cannot start, exits non-zero or outlives
+    ``timeout`` seconds.
+    """
+    timed_out = threading.Event()
+
+    def kill_group(pid):
+        try:
+            os.killpg(pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+
+    def on_timeout(pid):
+        timed_out.set()
+        kill_group(pid)
+
+    with open(stdout_path, "wb") as out, tempfile.TemporaryFile() as err:
+        start = time.perf_counter()
+        try:
+            proc = subprocess.Popen(
+                cmd, stdin=subprocess.DEVNULL, stdout=out, stderr=err, start_new_session=True
+            )
+        except OSError as exc:
+            raise RunError(f"cannot start {cmd[0]}: {exc}") from exc
+        timer = threading.Timer(timeout, on_timeout, args=(proc.pid,))
+        timer.start()
+        try:
+            _, status, usage = os.wait4(proc.pid, 0)
+        except BaseException:
+            kill_group(proc.pid)
+            proc.wait()
+            raise
+        finally:
+            timer.cancel()
+        wall = time.perf_counter() - start
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        err.seek(0)
+        stderr = err.read().decode("utf-8", errors="replace").strip()
+
+    peak = usage.ru_maxrss if sys.platform == "darwin" else usage.ru_maxrss * 1024
+    if timed_out.is_set():
+        raise RunError(f"timed out after {timeout:g} s")
+    if proc.returncode != 0:
+        tail = "".join(f"\n    {line}" for line in stderr.splitlines()[-5:])
+        raise RunError(f"exited with status {proc.returncode}{tail}")
+    return wall, peak
+
+
+def read_distances_text(path):
+    """Read one float per line (``inf`` allowed), as written by gdist_worker.py."""
+    with open(path, encoding="ascii") as lines:
+        return [float(line) for line in lines if line.strip()]
+
+
+def read_distances_csv(path, vertex_count):
+    """Read the ``vertex,distance,source`` CSV of ``exact-geodesics distance``.
+
+    Checks that there is one row per vertex, in vertex order (and that there
+    are ``vertex_count`` rows, unless it is None).
+    """
+    with open(path, encoding="utf-8", newline="") as stream:
+        rows = csv.reader(stream)
+        header = next(rows, None)
+        if header != ["vertex", "distance", "source"]:
+            raise RunError(f"{path}: unexpected CSV header {header}")
+        distances = []
+        for expected, row in enumerate(rows):
+            try:
+                if int(row[0]) != expected:
+                    raise ValueError(f"expected vertex {expected}")
+                distances.append(float(row[1]))
+            except (ValueError, IndexError) as exc:
+                raise RunError(f"{path}: bad row {expected + 2} {row}: {exc}") from exc
+    if vertex_count is not None and len(distances) != vertex_count:
+        raise RunError(f"{path}: {len(distances)} rows for {vertex_count} vertices")
+    return distances
+
+
+def parse_stats(path):
+    """Read the JSON of ``exact-geodesics stats`` and check the keys used here."""
+    try:
+        stats = json.loads(Path(path).read_text(encoding="utf-8"))
+    except ValueError as exc:
+        raise RunError(f"{path}: stats output is not JSON: {exc}") from exc
+    expected = {"propagation_seconds": (int, float), "wedges": int, "wedge_memory_bytes": int}
+    for key, kind in expected.items():
+        if not isinstance(stats.get(key), kind) or isinstance(stats.get(key), bool):
+            raise RunError(f"{path}: stats JSON lacks a numeric {key!r}")
+    return stats
+
+
+def compare(ours, reference):
+    """Compare two distance lists over the vertices finite in both.
+
+    The relative difference is taken against the reference, over vertices where
+    the reference distance is positive.
+    """
+    max_abs, max_abs_vertex, max_rel = 0.0, None, 0.0
+    both = ours_only = reference_only = 0
+    for vertex, (a, b) in enumerate(zip(ours, reference)):
+        finite_a, finite_b = math.isfinite(a), math.isfinite(b)
+        if finite_a and finite_b:
+            both += 1
+            diff = abs(a - b)
+            if max_abs_vertex is None or diff > max_abs:
+                max_abs, max_abs_vertex = diff, vertex
+            if b > 0:
+                max_rel = max(max_rel, diff / b)
+        elif finite_a:
+            ours_only += 1
+        elif finite_b:
+            reference_only += 1
+    return {
+        "finite_in_both": both,
+        "finite_ours_only": ours_only,
+        "finite_gdist_only": reference_only,
+        "max_abs_diff": max_abs if both else None,
+        "max_abs_diff_vertex": max_abs_vertex,
+        "max_rel_diff": max_rel if both else None,
+    }
+
+
+def benchmark_model(name, mesh, args, raw_dir):
+    """Run gdist and both CLI commands on one model; return its result dict."""
+    result = dict.fromkeys(CSV_COLUMNS)
+    result.update(model=name, source=args.source, errors=[])
+    source_spec = f"v:{args.source}"
+    gdist_distances = ours_distances = None
+
+    try:
+        report_path = raw_dir / f"{name}.gdist.json"
+        distances_path = raw_dir / f"{name}.gdist.txt"
+        cmd = [str(args.venv_python), str(WORKER), str(mesh), "--source", str(args.source),
+               "--distances", str(distances_path)]
+        run_measured(cmd, report_path, args.timeout)
+        report = json.loads(report_path.read_text(encoding="utf-8"))
+        gdist_distances = read_distances_text(distances_path)
+        result.update(
+            vertices=report["vertices"],
+            faces=report["faces"],
+            gdist_cpu_seconds=report["seconds_cpu"],
+            gdist_wall_seconds=report["seconds_wall"],
+            gdist_peak_rss_bytes=report["peak_rss_bytes"],
+            gdist_rss_before_bytes=report["rss_before_bytes"],
+            gdist_rss_increase_bytes=report["rss_increase_bytes"],
+            gdist_reached=report["reached"],
+        )
+        result["gdist"] = report
+        log(f"  gdist: {report['seconds_cpu']:.3f} s cpu, reached {report['reached']}/{report['vertices']}")
+    except RunError as exc:
+        result["errors"].append(f"gdist: {exc}")
+        log(f"  gdist FAILED: {exc}")
+
+    try:
+        stats_path = raw_dir / f"{name}.ours-stats.json"
+        cmd = [str(args.binary), "stats", str(mesh), "--source", source_spec]
+        wall, peak = run_measured(cmd, stats_path, args.timeout)
+        stats = parse_stats(stats_path)
+        result.update(
+            ours_propagation_seconds=stats["propagation_seconds"],
+            ours_wedges=stats["wedges"],
+            ours_wedge_memory_bytes=stats["wedge_memory_bytes"],
+            ours_stats_wall_seconds=wall,
+            ours_stats_peak_rss_bytes=peak,
+        )
+        result["ours_stats"] = stats
+        log(f"  ours stats: {stats['propagation_seconds']:.3f} s propagation, {stats['wedges']} wedges")
+    except RunError as exc:
+        result["errors"].append(f"ours stats: {exc}")
+        log(f"  ours stats FAILED: {exc}")
+
+    try:
+        csv_path = raw_dir / f"{name}.ours.csv"
+        cmd = [str(args.binary), "distance", str(mesh), "--source", source_spec, "--format", "csv"]
+        wall, peak = run_measured(cmd, csv_path, args.timeout)
+        ours_distances = read_distances_csv(csv_path, result["vertices"])
+        result.update(
+            vertices=len(ours_distances),
+            ours_distance_wall_seconds=wall,
+            ours_distance_peak_rss_bytes=peak,
+            ours_reached=sum(1 for d in ours_distances if math.isfinite(d)),
+        )
+        log(f"  ours distance: {wall:.3f} s wall, reached {result['ours_reached']}/{len(ours_distances)}")
+    except RunError as exc:
+        result["errors"].append(f"ours distance: {exc}")
+        log(f"  ours distance FAILED: {exc}")
+
+    if gdist_distances is not None and ours_distances is not None:
+        result.update(compare(ours_distances, gdist_distances))
+    if result["ours_propagation_seconds"] is not None and result["gdist_cpu_seconds"]:
+        result["ratio_ours_over_gdist"] = result["ours_propagation_seconds"] / result["gdist_cpu_seconds"]
+    return result
+
+
+def ensure_binary(binary, force_build):
+    """Build the release CLI with cargo if it is missing (or if asked to)."""
+    if force_build or not binary.exists():
+        log(f"building {binary.name}: cargo build --release")
+        try:
+            build = subprocess.run(["cargo", "build", "--release"], cwd=REPO, stdout=sys.stderr)
+        except OSError as exc:
+            raise SetupError(f"cannot run cargo: {exc}") from exc
+        if build.returncode != 0:
+            raise SetupError("cargo build --release failed")
+    if not binary.exists():
+        raise SetupError(f"{binary} does not exist")
+
+
+def ensure_venv(venv_python):
+    """Check that the venv's python imports gdist."""
+    hint = f"run {HERE.relative_to(REPO) / 'setup_venv.sh'} first"
+    if not venv_python.exists():
+        raise SetupError(f"{venv_python} does not exist: {hint}")
+    probe = subprocess.run([str(venv_python), "-c", "import gdist"], capture_output=True, text=True)
+    if probe.returncode != 0:
+        raise SetupError(f"{venv_python} cannot import gdist: {hint}\n{probe.stderr.strip()}")
+
+
+def select_models(models_dir, names):
+    """Map model names (file stems) to OBJ paths; all OBJ files when ``names`` is None."""
+    if names is None:
+        return {path.stem: path for path in sorted(models_dir.glob("*.obj"))}
+    selected = {}
+    for name in names:
+        path = models_dir / f"{name.removesuffix('.obj')}.obj"
+        if not path.is_file():
+            raise SetupError(f"no model {name!r} in {models_dir}")
+        selected[path.stem] = path
+    return selected
+
+
+def git_commit():
+    """The repository's HEAD commit, or None outside a git checkout."""
+    try:
+        probe = subprocess.run(["git", "rev-parse", "HEAD"], cwd=REPO, capture_output=True, text=True)
+    except OSError:
+        return None
+    return probe.stdout.strip() if probe.returncode == 0 else None
+
+
+def write_results(out_dir, meta, results):
+    """Write benchmark.json (everything) and benchmark.csv (one row per model)."""
+    (out_dir / "benchmark.json").write_text(
+        json.dumps({"meta": meta, "results": results}, indent=2) + "\n", encoding="utf-8"
+    )
+    with open(out_dir / "benchmark.csv", "w", encoding="utf-8", newline="") as stream:
+        writer = csv.DictWriter(stream, fieldnames=CSV_COLUMNS, extrasaction="ignore")
+        writer.writeheader()
+        for result in results:
+            writer.writerow({**result, "errors": "; ".join(result["errors"])})
+
+
+def format_table(results):
+    """A fixed-width text table of the main figures."""
+
+    def num(value, fmt, scale=None):
+        if value is None:
+            return "-"
+        return format(value if scale is None else value / scale, fmt)
+
+    columns = [
+        ("model", lambda r: r["model"]),
+        ("V", lambda r: num(r["vertices"], "d")),
+        ("ours s", lambda r: num(r["ours_propagation_seconds"], ".3f")),
+        ("gdist s", lambda r: num(r["gdist_cpu_seconds"], ".3f")),
+        ("ratio", lambda r: num(r["ratio_ours_over_gdist"], ".2f")),
+        ("wedges", lambda r: num(r["ours_wedges"], "d")),
+        ("wedge MiB", lambda r: num(r["ours_wedge_memory_bytes"], ".1f", MIB)),
+        ("ours RSS MiB", lambda r: num(r["ours_distance_peak_rss_bytes"], ".1f", MIB)),
+        ("gdist RSS MiB", lambda r: num(r["gdist_peak_rss_bytes"], ".1f", MIB)),
+        ("gdist +MiB", lambda r: num(r["gdist_rss_increase_bytes"], ".1f", MIB)),
+        ("max abs", lambda r: num(r["max_abs_diff"], ".1e")),
+        ("max rel", lambda r: num(r["max_rel_diff"], ".1e")),
+        ("ours only", lambda r: num(r["finite_ours_only"], "d")),
+        ("gdist only", lambda r: num(r["finite_gdist_only"], "d")),
+        ("ours wall s", lambda r: num(r["ours_distance_wall_seconds"], ".3f")),
+    ]
+    rows = [[title for title, _ in columns]]
+    rows += [[cell(result) for _, cell in columns] for result in results]
+    widths = [max(len(row[i]) for row in rows) for i in range(len(columns))]
+    lines = []
+    for index, row in enumerate(rows):
+        cells = [row[0].ljust(widths[0])] + [c.rjust(w) for c, w in zip(row[1:], widths[1:])]
+        lines.append("  ".join(cells))
+        if index == 0:
+            lines.append("  ".join("-" * w for w in widths))
+    for result in results:
+        for error in result["errors"]:
+            lines.append(f"{result['model']}: {error}")
+    return "\n".join(lines)
+
+
+def parse_args():
+    """Command-line options."""
+    parser = argparse.ArgumentParser(
+        description=__doc__.split("\n\n", 1)[0],
+        formatter_class=argparse.ArgumentDefaultsHelpFormatter,
+    )
+    parser.add_argument("--models", type=lambda s: [m for m in s.split(",") if m],
+                        help="comma-separated model names (default: every OBJ file in --models-dir)")
+    parser.add_argument("--models-dir", type=Path, default=DEFAULT_MODELS_DIR, help="folder of OBJ models")
+    parser.add_argument("--source", type=int, default=0, help="0-based source vertex")
+    parser.add_argument("--binary", type=Path, default=DEFAULT_BINARY,
+                        help="exact-geodesics executable (built with cargo build --release if missing)")
+    parser.add_argument("--build", action="store_true",
+                        help="run cargo build --release even if the binary exists")
+    parser.add_argument("--venv-python", type=Path, default=DEFAULT_VENV_PYTHON,
+                        help="python of the venv made by setup_venv.sh")
+    parser.add_argument("--out", type=Path, default=DEFAULT_OUT, help="output folder")
+    parser.add_argument("--timeout", type=float, default=600.0, help="seconds allowed to each run")
+    return parser.parse_args()
+
+
+def main():
+    args = parse_args()
+    if not args.models_dir.is_dir():
+        print(f"models folder {args.models_dir} not found: nothing to benchmark", file=sys.stderr)
+        return 0
+    try:
+        models = select_models(args.models_dir, args.models)
+        ensure_venv(args.venv_python)
+        ensure_binary(args.binary, args.build)
+    except SetupError as exc:
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
+
+    raw_dir = args.out / "raw"
+    raw_dir.mkdir(parents=True, exist_ok=True)
+    meta = {
+        "date": datetime.now(timezone.utc).isoformat(timespec="seconds"),
+        "git_commit": git_commit(),
+        "binary": str(args.binary),
+        "source": args.source,
+        "models_dir": str(args.models_dir),
+        "machine": platform.machine(),
+        "cpu_count": os.cpu_count(),
+        "harness_python": platform.python_version(),
+        "gdist_version": None,
+    }
+    results = []
+    for index, (name, mesh) in enumerate(models.items(), start=1):
+        log(f"[{index}/{len(models)}] {name}")
+        result = benchmark_model(name, mesh, args, raw_dir)
+        if "gdist" in result:
+            meta["gdist_version"] = result["gdist"]["gdist_version"]
+        results.append(result)
+        write_results(args.out, meta, results)
+
+    print(format_table(results))
+    log(f"wrote {args.out / 'benchmark.json'} and {args.out / 'benchmark.csv'}")
+    return 1 if any(result["errors"] for result in results) else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

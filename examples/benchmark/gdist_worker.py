@@ -1,0 +1,144 @@
+"""Time one `gdist.compute_gdist` call (Kirsanov's exact MMP) on an OBJ mesh.
+
+Runs inside the benchmark venv (see setup_venv.sh), normally as a subprocess of
+bench_vs_gdist.py, so that each measurement gets a fresh process. It loads the
+mesh, then measures only the `compute_gdist` call, from one source vertex to all
+vertices:
+
+- ``seconds_cpu`` / ``seconds_wall``: ``time.process_time()`` /
+  ``time.perf_counter()`` around the call. gdist builds its own mesh
+  (adjacency) inside the call, so both include that construction.
+- ``rss_before_bytes``: resident set size just before the call.
+- ``peak_rss_bytes``: ``ru_maxrss`` of this process after the call. On Linux
+  the high-water mark is reset just before the call (``peak_rss_reset``), so
+  this is the peak while the call ran, the interpreter, NumPy, SciPy and the
+  mesh arrays included; ``rss_increase_bytes`` is that peak minus the RSS
+  before the call.
+
+Unreachable vertices and vertices no face uses come back from gdist as its
+``GEODESIC_INF`` (1e100) or as ``inf``; both are written as ``inf``. Distances
+go to a text file (one per line, in vertex order, 17 significant digits); the
+JSON report goes to stdout.
+"""
+
+import argparse
+import json
+import resource
+import sys
+import time
+from importlib.metadata import version
+from pathlib import Path
+
+import gdist
+import numpy as np
+
+# gdist's GEODESIC_INF is 1e100; anything this large means "not reached".
+UNREACHED_THRESHOLD = 1e99
+
+
+def load_obj(path):
+    """Read the vertices and triangles of an OBJ file, keeping vertex order.
+
+    Accepts ``v x y z [w]`` and ``f a b c`` lines with 1-based or negative
+    (relative) indices, in the ``a``, ``a/t``, ``a//n`` and ``a/t/n`` forms;
+    every other record and comments are ignored. Faces that are not triangles
+    are an error. Returns ``(vertices float64 Nx3, triangles int32 Mx3)``.
+    """
+    vertices = []
+    triangles = []
+    with open(path, encoding="utf-8") as lines:
+        for lineno, line in enumerate(lines, start=1):
+            fields = line.split("#", 1)[0].split()
+            if not fields:
+                continue
+            if fields[0] == "v":
+                vertices.append([float(x) for x in fields[1:4]])
+            elif fields[0] == "f":
+                corners = [int(token.split("/", 1)[0]) for token in fields[1:]]
+                if len(corners) != 3:
+                    raise ValueError(f"{path}:{lineno}: face with {len(corners)} vertices, expected 3")
+                triangles.append([c - 1 if c > 0 else len(vertices) + c for c in corners])
+    vertices = np.asarray(vertices, dtype=np.float64).reshape(-1, 3)
+    triangles = np.asarray(triangles, dtype=np.int32).reshape(-1, 3)
+    if triangles.size and (triangles.min() < 0 or triangles.max() >= len(vertices)):
+        raise ValueError(f"{path}: face index out of range (1..{len(vertices)})")
+    return vertices, triangles
+
+
+def current_rss_bytes():
+    """Resident set size of this process now, from /proc (None elsewhere)."""
+    try:
+        with open("/proc/self/status", encoding="ascii") as status:
+            for line in status:
+                if line.startswith("VmRSS:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
+    return None
+
+
+def reset_peak_rss():
+    """Reset the kernel's RSS high-water mark (Linux >= 4.0); True on success."""
+    try:
+        with open("/proc/self/clear_refs", "w", encoding="ascii") as clear_refs:
+            clear_refs.write("5")
+        return True
+    except OSError:
+        return False
+
+
+def peak_rss_bytes():
+    """Peak RSS of this process as reported by getrusage, in bytes."""
+    maxrss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    return maxrss if sys.platform == "darwin" else maxrss * 1024
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n", 1)[0])
+    parser.add_argument("mesh", type=Path, help="OBJ file")
+    parser.add_argument("--source", type=int, default=0, help="0-based source vertex (default 0)")
+    parser.add_argument("--distances", type=Path, required=True, help="text file to write the distances to")
+    args = parser.parse_args()
+
+    vertices, triangles = load_obj(args.mesh)
+    if not 0 <= args.source < len(vertices):
+        parser.error(f"--source {args.source} out of range: the mesh has {len(vertices)} vertices")
+    sources = np.array([args.source], dtype=np.int32)
+
+    peak_reset = reset_peak_rss()
+    rss_before = current_rss_bytes()
+    cpu_start = time.process_time()
+    wall_start = time.perf_counter()
+    distances = gdist.compute_gdist(vertices, triangles, source_indices=sources)
+    wall = time.perf_counter() - wall_start
+    cpu = time.process_time() - cpu_start
+    peak = peak_rss_bytes()
+
+    distances = np.asarray(distances, dtype=np.float64)
+    distances[~(distances < UNREACHED_THRESHOLD)] = np.inf
+    if distances.shape != (len(vertices),):
+        raise RuntimeError(f"gdist returned {distances.shape} distances for {len(vertices)} vertices")
+    args.distances.parent.mkdir(parents=True, exist_ok=True)
+    np.savetxt(args.distances, distances, fmt="%.17g")
+
+    report = {
+        "mesh": str(args.mesh),
+        "source": args.source,
+        "vertices": len(vertices),
+        "faces": len(triangles),
+        "gdist_version": version("gdist"),
+        "numpy_version": np.__version__,
+        "seconds_cpu": cpu,
+        "seconds_wall": wall,
+        "rss_before_bytes": rss_before,
+        "peak_rss_bytes": peak,
+        "peak_rss_reset": peak_reset,
+        "rss_increase_bytes": None if rss_before is None else max(0, peak - rss_before),
+        "reached": int(np.isfinite(distances).sum()),
+        "distances_path": str(args.distances),
+    }
+    print(json.dumps(report, indent=2))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,260 @@
+//! The command line: its output contract and its errors (non-zero exit, a message naming the
+//! file and line, never a panic).
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_exact-geodesics"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn stdout(out: &Output) -> String {
+    assert!(
+        out.status.success(),
+        "command failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout.clone()).expect("UTF-8 output")
+}
+
+/// Fails with exit code 1 (an error, not a panic's 101) and a message containing `needle`.
+fn fails_with(args: &[&str], needle: &str) {
+    let out = run(args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "stderr: {err}");
+    assert!(err.contains(needle), "expected '{needle}' in: {err}");
+}
+
+fn temp_file(name: &str, text: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("exact-geodesics-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join(name);
+    std::fs::write(&path, text).expect("temp file");
+    path
+}
+
+#[test]
+fn distance_csv_has_one_row_per_vertex_with_nearest_source() {
+    let text = stdout(&run(&[
+        "distance", "gen:cube", "--source", "v:0", "--source", "v:6",
+    ]));
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("vertex,distance,source"));
+    let rows: Vec<Vec<String>> = lines
+        .map(|l| l.split(',').map(String::from).collect())
+        .collect();
+    assert_eq!(rows.len(), 8);
+    assert_eq!(rows[0], ["0", "0", "0"]);
+    assert_eq!(rows[6], ["6", "0", "1"]);
+    // Vertex 2, (1, 1, 0), is sqrt(2) from vertex 0 and 1 from vertex 6, (1, 1, 1).
+    let d2: f64 = rows[2][1].parse().expect("a number");
+    assert!((d2 - 1.0).abs() < 1e-12);
+    assert_eq!(rows[2][2], "1");
+}
+
+#[test]
+fn unreachable_vertices_are_inf_with_empty_source() {
+    // Two separate triangles and a vertex no face uses.
+    let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nv 6 5 5\nv 5 6 5\nv 9 9 9\nf 1 2 3\nf 4 5 6\n";
+    let path = temp_file("parts.obj", obj);
+    let text = stdout(&run(&[
+        "distance",
+        path.to_str().expect("UTF-8 path"),
+        "--source",
+        "v:0",
+    ]));
+    let rows: Vec<&str> = text.lines().skip(1).collect();
+    assert_eq!(rows.len(), 7);
+    let d1: f64 = rows[1]
+        .split(',')
+        .nth(1)
+        .expect("distance")
+        .parse()
+        .expect("a number");
+    assert!(
+        (d1 - 1.0).abs() < 1e-12 && rows[1].ends_with(",0"),
+        "{}",
+        rows[1]
+    );
+    for row in &rows[3..] {
+        assert!(row.ends_with(",inf,"), "{row}");
+    }
+}
+
+#[test]
+fn max_distance_marks_farther_vertices_unreachable() {
+    let text = stdout(&run(&[
+        "distance",
+        "gen:cube",
+        "--source",
+        "v:0",
+        "--max-distance",
+        "1.2",
+    ]));
+    let far: Vec<&str> = text.lines().filter(|l| l.contains(",inf,")).collect();
+    assert_eq!(far.len(), 4, "{text}");
+}
+
+#[test]
+fn path_json_length_equals_distance() {
+    let text = stdout(&run(&[
+        "path", "gen:cube", "--source", "v:0", "--target", "v:6",
+    ]));
+    let json: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    let length = json["length"].as_f64().expect("length");
+    let distance = json["distance"].as_f64().expect("distance");
+    assert!((length - 5f64.sqrt()).abs() < 1e-12);
+    assert!((distance - 5f64.sqrt()).abs() < 1e-12);
+    assert_eq!(json["simplices"][0], "v:6");
+    assert_eq!(
+        json["simplices"]
+            .as_array()
+            .expect("list")
+            .last()
+            .expect("end"),
+        "v:0"
+    );
+}
+
+#[test]
+fn path_obj_is_a_polyline() {
+    let text = stdout(&run(&[
+        "path",
+        "gen:cube",
+        "--source",
+        "v:0",
+        "--target",
+        "f:4,0.2,0.3,0.5",
+        "--format",
+        "obj",
+    ]));
+    assert!(text.lines().any(|l| l.starts_with("l 1 2")));
+}
+
+#[test]
+fn wedges_of_face_20_follow_the_paper_table_shape() {
+    let text = stdout(&run(&[
+        "wedges",
+        "gen:paper-example-4",
+        "--source",
+        "v:2",
+        "--face",
+        "20",
+    ]));
+    assert!(
+        text.contains("There are 2 wedges at edge (v5, v4):"),
+        "{text}"
+    );
+    assert!(
+        text.contains("There are 5 wedges at edge (v4, v13):"),
+        "{text}"
+    );
+    assert!(
+        text.contains("There are 3 wedges at edge (v13, v5):"),
+        "{text}"
+    );
+    assert!(
+        text.contains("(0.000, 0.976, 1.826, 2.799, true, v2, 0.000)"),
+        "{text}"
+    );
+    assert!(
+        text.contains("(0.000, 0.038, 0.000, 0.038, false, v4, 2.778)"),
+        "{text}"
+    );
+}
+
+#[test]
+fn stats_json_reports_the_counters() {
+    let text = stdout(&run(&["stats", "gen:icosphere:2", "--source", "v:0"]));
+    let json: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    for key in [
+        "vertices",
+        "faces",
+        "edges",
+        "wedges",
+        "wedges_per_edge",
+        "edge_length",
+        "eq2_cases",
+        "propagation_seconds",
+        "peak_queue",
+        "wedge_memory_bytes",
+    ] {
+        assert!(!json[key].is_null(), "missing {key}");
+    }
+    assert_eq!(json["vertices"], 162);
+    assert_eq!(json["coverage"]["has_overlaps"], false);
+}
+
+#[test]
+fn missing_file_is_named() {
+    fails_with(
+        &["distance", "/nonexistent/mesh.obj", "--source", "v:0"],
+        "/nonexistent/mesh.obj",
+    );
+}
+
+#[test]
+fn malformed_obj_names_file_and_line() {
+    let path = temp_file("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n");
+    fails_with(
+        &["distance", path.to_str().expect("UTF-8"), "--source", "v:0"],
+        "bad.obj:3",
+    );
+}
+
+#[test]
+fn nan_coordinate_names_the_line() {
+    let path = temp_file("nan.obj", "v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n");
+    fails_with(
+        &["distance", path.to_str().expect("UTF-8"), "--source", "v:0"],
+        "nan.obj:2",
+    );
+}
+
+#[test]
+fn non_manifold_edge_is_refused() {
+    let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
+    let path = temp_file("fin.obj", obj);
+    fails_with(
+        &["distance", path.to_str().expect("UTF-8"), "--source", "v:0"],
+        "fin.obj:",
+    );
+}
+
+#[test]
+fn quads_are_refused_unless_triangulated() {
+    let obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+    let path = temp_file("quad.obj", obj);
+    let p = path.to_str().expect("UTF-8");
+    fails_with(&["distance", p, "--source", "v:0"], "quad.obj:5");
+    let text = stdout(&run(&["distance", p, "--source", "v:0", "--triangulate"]));
+    assert_eq!(text.lines().count(), 5);
+}
+
+#[test]
+fn out_of_range_and_malformed_sources_are_errors() {
+    fails_with(
+        &["distance", "gen:cube", "--source", "v:99"],
+        "out of range",
+    );
+    fails_with(
+        &["distance", "gen:cube", "--source", "f:0,0.5,0.5"],
+        "bad point",
+    );
+    fails_with(
+        &["distance", "gen:cube", "--source", "e:0,6,0.5"],
+        "not joined",
+    );
+    fails_with(
+        &["distance", "gen:cube", "--source", "e:0,1,1.5"],
+        "not in [0, 1]",
+    );
+    fails_with(&["distance", "gen:cube", "--source", "q:1"], "bad point");
+    fails_with(
+        &["distance", "gen:no-such-shape", "--source", "v:0"],
+        "unknown generated mesh",
+    );
+}
