@@ -240,16 +240,23 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 *v = None;
             }
         }
-        let slots = self.slots;
+        // Move the final wedges out of their slots: cloning them would double the peak memory.
+        let mut slots: Vec<Option<Wedge<S>>> =
+            self.slots.into_iter().map(|s| Some(s.wedge)).collect();
         let wedges: Vec<Vec<Wedge<S>>> = self
             .lists
             .iter()
             .map(|list| {
                 list.iter()
-                    .map(|&i| slots[i as usize].wedge.clone())
+                    .map(|&i| {
+                        slots[i as usize]
+                            .take()
+                            .expect("a wedge is in one list only")
+                    })
                     .collect()
             })
             .collect();
+        drop(slots);
         GeodesicField::new(
             self.mesh,
             self.unfolding,
