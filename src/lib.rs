@@ -11,6 +11,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs, rustdoc::broken_intra_doc_links)]
 
+pub mod benchmark_model;
 pub mod mesh;
 pub mod mmp;
 pub mod scalar;
