@@ -2,12 +2,14 @@
 //!
 //! The only part of the crate that prints. Errors go to stderr with exit code 1 (2 for usage).
 
+mod benchmark_model;
 mod distance;
 mod load;
 mod path;
 mod progress;
 mod spec;
 mod stats;
+mod verify;
 mod wedges;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
@@ -40,6 +42,11 @@ enum Command {
     Wedges(wedges::WedgesArgs),
     /// Counters and timings of one propagation, as JSON.
     Stats(stats::StatsArgs),
+    /// A benchmark model [LZT §5]: obstacles lifted as cylinders over a triangulated rectangle,
+    /// with the exact geodesic between p and q from the visibility graph.
+    BenchmarkModel(benchmark_model::BenchmarkModelArgs),
+    /// Checks the engine on a benchmark model written by benchmark-model.
+    Verify(verify::VerifyArgs),
 }
 
 /// The number type the engine runs on.
@@ -152,6 +159,8 @@ fn main() -> ExitCode {
         Command::Path(args) => path::run(args),
         Command::Wedges(args) => wedges::run(args),
         Command::Stats(args) => stats::run(args),
+        Command::BenchmarkModel(args) => benchmark_model::run(args),
+        Command::Verify(args) => verify::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
