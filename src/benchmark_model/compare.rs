@@ -15,11 +15,9 @@ pub struct PathDeviation {
 }
 
 impl PathDeviation {
-    /// The largest of the three measures.
+    /// The largest of the three measures (NaN if any is NaN).
     pub fn max(&self) -> f64 {
-        self.traced_to_truth
-            .max(self.truth_to_traced)
-            .max(self.max_height)
+        largest([self.traced_to_truth, self.truth_to_traced, self.max_height].into_iter())
     }
 }
 
@@ -29,20 +27,26 @@ pub fn path_deviation(traced: &[[f64; 3]], truth: &[Point]) -> PathDeviation {
     PathDeviation {
         traced_to_truth: one_sided(&planar, truth),
         truth_to_traced: one_sided(truth, &planar),
-        max_height: traced.iter().map(|x| x[2].abs()).fold(0.0, f64::max),
+        max_height: largest(traced.iter().map(|x| x[2].abs())),
     }
 }
 
 /// The largest distance from a point of `from` to the polyline `to`.
 fn one_sided(from: &[Point], to: &[Point]) -> f64 {
-    from.iter()
-        .map(|&x| match to {
+    largest(from.iter().map(|&x| {
+        match to {
             [] => f64::INFINITY,
             [only] => distance_to_segment(*only, *only, x),
             _ => to
                 .windows(2)
                 .map(|w| distance_to_segment(w[0], w[1], x))
                 .fold(f64::INFINITY, f64::min),
-        })
-        .fold(0.0, f64::max)
+        }
+    }))
+}
+
+/// The largest of non-negative values, 0 for none; unlike `f64::max`, a NaN (a traced point
+/// that is not a number) wins, so that it fails every tolerance.
+fn largest(values: impl Iterator<Item = f64>) -> f64 {
+    values.fold(0.0, |m, x| if x.is_nan() || x > m { x } else { m })
 }

@@ -68,14 +68,13 @@ pub fn run(args: &VerifyArgs) -> Result<(), String> {
     println!("traced path to truth    {:e}", deviation.traced_to_truth);
     println!("truth to traced path    {:e}", deviation.truth_to_traced);
     println!("largest height on path  {:e}", deviation.max_height);
-    // NaN fails too.
-    if !(relative_error <= args.distance_tolerance) {
+    if relative_error.is_nan() || relative_error > args.distance_tolerance {
         return Err(format!(
             "relative error of d(p, q) {relative_error:e} exceeds {:e}",
             args.distance_tolerance
         ));
     }
-    if !(deviation.max() <= args.path_tolerance) {
+    if deviation.max().is_nan() || deviation.max() > args.path_tolerance {
         return Err(format!(
             "the traced path is {:e} from the ground truth, more than {:e}",
             deviation.max(),
