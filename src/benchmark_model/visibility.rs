@@ -4,7 +4,9 @@
 //! Every visibility decision is made with exact orientation predicates. A segment may touch an
 //! obstacle's corners and run along its edges; it is blocked only where it enters an interior.
 
-use super::geometry::{distance, orient, segments_cross, strictly_inside_segment, Point};
+use super::geometry::{
+    bounding_box, distance, orient, segments_cross, strictly_inside_segment, Point,
+};
 use super::scene::Scene;
 use super::BenchmarkError;
 use serde::{Deserialize, Serialize};
@@ -28,26 +30,38 @@ pub fn shortest_path(scene: &Scene) -> Result<ShortestPath, BenchmarkError> {
     Ok(shortest_path_among(&obstacles, scene.p, scene.q))
 }
 
-/// Dijkstra on the visibility graph whose nodes are p, q and the convex obstacle corners: a
-/// shortest path bends only at convex corners. `obstacles` are valid and counter-clockwise.
+/// A* (Dijkstra guided by the straight distance to q, a consistent estimate) on the reduced
+/// visibility graph: its nodes are p, q and the convex obstacle corners, since a shortest path
+/// bends only at convex corners, and its edges are the visible segments that are tangent to the
+/// obstacle at each corner they end at, since a shortest path wraps around the corners it
+/// touches. `obstacles` are valid and counter-clockwise.
 pub(crate) fn shortest_path_among(obstacles: &[Vec<Point>], p: Point, q: Point) -> ShortestPath {
-    let mut nodes = vec![p, q];
+    // Each node with the neighbouring corners of its obstacle, if it is a corner.
+    let mut nodes: Vec<(Point, Option<[Point; 2]>)> = vec![(p, None), (q, None)];
     for polygon in obstacles {
         let n = polygon.len();
         nodes.extend((0..n).filter_map(|i| {
-            let turn = orient(polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n]);
-            (turn == Ordering::Greater).then_some(polygon[i])
+            let (prev, w, next) = (polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n]);
+            (orient(prev, w, next) == Ordering::Greater).then_some((w, Some([prev, next])))
         }));
     }
-    // Dense Dijkstra: the graph is complete up to visibility, so a heap would not help.
+    let tangent = |(w, around): (Point, Option<[Point; 2]>), x: Point| {
+        around.is_none_or(|[prev, next]| {
+            let (a, b) = (orient(w, x, prev), orient(w, x, next));
+            a == Ordering::Equal || a != b.reverse()
+        })
+    };
+    let boxes: Vec<[Point; 2]> = obstacles.iter().map(|o| bounding_box(o)).collect();
+    // Dense: the graph is complete up to visibility, so a heap would not help.
     let n = nodes.len();
     let mut best = vec![f64::INFINITY; n];
     let mut previous = vec![usize::MAX; n];
     let mut done = vec![false; n];
+    let estimate: Vec<f64> = nodes.iter().map(|&(x, _)| distance(x, q)).collect();
     best[0] = 0.0;
     while let Some(u) = (0..n)
         .filter(|&i| !done[i] && best[i].is_finite())
-        .min_by(|&i, &j| best[i].total_cmp(&best[j]))
+        .min_by(|&i, &j| (best[i] + estimate[i]).total_cmp(&(best[j] + estimate[j])))
     {
         done[u] = true;
         if u == 1 {
@@ -57,8 +71,13 @@ pub(crate) fn shortest_path_among(obstacles: &[Vec<Point>], p: Point, q: Point) 
             if done[v] {
                 continue;
             }
-            let candidate = best[u] + distance(nodes[u], nodes[v]);
-            if candidate < best[v] && visible(obstacles, nodes[u], nodes[v]) {
+            let (from, to) = (nodes[u].0, nodes[v].0);
+            let candidate = best[u] + distance(from, to);
+            if candidate < best[v]
+                && tangent(nodes[u], to)
+                && tangent(nodes[v], from)
+                && visible(obstacles, &boxes, from, to)
+            {
                 best[v] = candidate;
                 previous[v] = u;
             }
@@ -71,17 +90,22 @@ pub(crate) fn shortest_path_among(obstacles: &[Vec<Point>], p: Point, q: Point) 
     let mut at = 1;
     while at != 0 {
         at = previous[at];
-        points.push(nodes[at]);
+        points.push(nodes[at].0);
     }
     points.reverse();
     let length = points.windows(2).map(|w| distance(w[0], w[1])).sum();
     ShortestPath { length, points }
 }
 
-/// Whether the closed segment `uv` avoids the interior of every obstacle. `u` and `v` are p, q
-/// or obstacle corners.
-pub(crate) fn visible(obstacles: &[Vec<Point>], u: Point, v: Point) -> bool {
-    obstacles.iter().all(|polygon| {
+/// Whether the closed segment `uv` avoids the interior of every obstacle, given with its
+/// bounding box. `u` and `v` are p, q or obstacle corners.
+fn visible(obstacles: &[Vec<Point>], boxes: &[[Point; 2]], u: Point, v: Point) -> bool {
+    let segment = bounding_box(&[u, v]);
+    obstacles.iter().zip(boxes).all(|(polygon, b)| {
+        let apart = (0..2).any(|i| b[1][i] < segment[0][i] || segment[1][i] < b[0][i]);
+        if apart {
+            return true;
+        }
         let n = polygon.len();
         (0..n).all(|i| {
             let (prev, w, next) = (polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n]);
