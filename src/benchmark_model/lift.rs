@@ -10,8 +10,8 @@ use std::cmp::Ordering;
 /// The floor at z = 0 and, on each obstacle, a wall of `rows` rows of quads (two triangles
 /// each) from every boundary edge of the floor up to `height`, closed by a flat top cap.
 ///
-/// All faces are counter-clockwise seen from outside the solid: the floor from +z, walls from
-/// the free space, caps from above. A wall's bottom row uses the floor's boundary vertices, so
+/// All faces are counter-clockwise seen from the open space above the surface: the floor and
+/// the caps from +z, the walls from outside their obstacle. A wall's bottom row uses the floor's boundary vertices, so
 /// the cylinder is sewn to the floor edge by edge.
 pub(crate) fn lift(
     floor: &Floor,
