@@ -13,6 +13,8 @@
 
 pub mod mesh;
 pub mod mmp;
+pub mod paper;
+pub mod render;
 pub mod scalar;
 
 pub use mesh::{EdgeId, FaceId, MeshError, TriMesh, ValidationReport, VertexId};

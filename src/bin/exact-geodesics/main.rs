@@ -8,6 +8,7 @@ mod path;
 mod progress;
 mod spec;
 mod stats;
+mod subdivision;
 mod wedges;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
@@ -40,6 +41,9 @@ enum Command {
     Wedges(wedges::WedgesArgs),
     /// Counters and timings of one propagation, as JSON.
     Stats(stats::StatsArgs),
+    /// The regions of one face, each closest to one image of a pseudo-source, and their
+    /// bisectors [LZT Property 4, Fig. 15]; optionally drawn as SVG.
+    Subdivision(subdivision::SubdivisionArgs),
 }
 
 /// The number type the engine runs on.
@@ -152,6 +156,7 @@ fn main() -> ExitCode {
         Command::Path(args) => path::run(args),
         Command::Wedges(args) => wedges::run(args),
         Command::Stats(args) => stats::run(args),
+        Command::Subdivision(args) => subdivision::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
