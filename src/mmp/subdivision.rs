@@ -146,6 +146,9 @@ pub fn polygon_area(polygon: &[Point2]) -> f64 {
 /// A traced region: its image's index and its polygon.
 type Traced = (usize, Vec<Point2>);
 
+/// Angular slack (radians) when asking whether a wedge's rays meet a point.
+const ANGLE: f64 = 1e-12;
+
 /// Rays per region, bisection steps per boundary point, samples per ray.
 const RAYS: usize = 720;
 const BISECTIONS: usize = 50;
@@ -296,12 +299,18 @@ pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -
 }
 
 /// The image nearest to `x` among those whose wedges reach it (ties to the lower index).
+///
+/// A tie goes to the smaller sigma: where a pseudo-source was reached straight from another
+/// image, the two tie along the line behind it, and the region is the upstream image's.
 fn nearest_image(images: &[Image], x: Point2, tol: f64) -> Option<usize> {
     let mut best: Option<(usize, f64)> = None;
     for (k, m) in images.iter().enumerate() {
-        if m.reach.iter().any(|r| reaches(*r, m.position, x, tol)) {
+        if m.reach.iter().any(|r| reaches(*r, m.position, x)) {
             let d = norm(sub(x, m.position)) + m.sigma;
-            if best.is_none_or(|(_, b)| d < b - tol * 1e-3) {
+            let better = best.is_none_or(|(j, b)| {
+                d < b - tol * 1e-3 || (d <= b + tol * 1e-3 && m.sigma < images[j].sigma)
+            });
+            if better {
                 best = Some((k, d));
             }
         }
@@ -309,7 +318,8 @@ fn nearest_image(images: &[Image], x: Point2, tol: f64) -> Option<usize> {
     best.map(|(k, _)| k)
 }
 
-fn reaches(reach: Reach, s: Point2, x: Point2, tol: f64) -> bool {
+/// Whether the rays of `reach` from image `s` meet `x`, with an angular slack of `ANGLE`.
+fn reaches(reach: Reach, s: Point2, x: Point2) -> bool {
     let (q0, q1, beyond) = match reach {
         Reach::Face => return true,
         Reach::Beyond(q0, q1) => (q0, q1, true),
@@ -317,11 +327,12 @@ fn reaches(reach: Reach, s: Point2, x: Point2, tol: f64) -> bool {
     };
     let (a, b, d) = (sub(q0, s), sub(q1, s), sub(x, s));
     let turn = cross(a, b).signum();
-    let slack = tol * (norm(a) + norm(b));
-    let within = turn * cross(a, d) >= -slack && turn * cross(d, b) >= -slack;
+    let within = turn * cross(a, d) >= -ANGLE * norm(a) * norm(d)
+        && turn * cross(d, b) >= -ANGLE * norm(b) * norm(d);
     // Positive on the image's side of the segment's line.
     let e = sub(q1, q0);
     let side = cross(e, sub(x, q0)) * cross(e, sub(s, q0)).signum();
+    let slack = ANGLE * norm(e) * norm(d);
     within
         && if beyond {
             side <= slack
@@ -370,34 +381,19 @@ fn trace_region(
         (-std::f64::consts::PI, std::f64::consts::PI)
     };
     let direction = |t: f64| [(base + t).cos(), (base + t).sin()];
-    // The run of image k along the ray at angle t: (near, far) parameters.
+    // The part of the ray at angle t in image k's region: (near, far) parameters. By Property 4
+    // it starts where the ray enters the face, if anywhere.
     let run = |t: f64| -> Option<(f64, f64, Point2)> {
         let d = direction(t);
-        let (ta, tb) = clip_ray(face, s, d)?;
+        let (near, tb) = clip_ray(face, s, d)?;
         let inside = |u: f64| nearest(along(s, d, u)) == Some(k);
-        let step = (tb - ta) / SAMPLES as f64;
-        let first = (0..=SAMPLES).find(|&i| inside(ta + step * i as f64))?;
-        let near = if first == 0 {
-            ta
-        } else {
-            bisect(
-                ta + step * (first - 1) as f64,
-                ta + step * first as f64,
-                |u| inside(u),
-            )
-        };
-        let last = (first..=SAMPLES)
-            .take_while(|&i| inside(ta + step * i as f64))
-            .last()
-            .unwrap_or(first);
-        let far = if last == SAMPLES {
-            tb
-        } else {
-            bisect(
-                ta + step * (last + 1) as f64,
-                ta + step * last as f64,
-                |u| !inside(u),
-            )
+        let step = (tb - near) / SAMPLES as f64;
+        if !inside(near + 1e-6 * (tb - near)) {
+            return None;
+        }
+        let far = match (1..=SAMPLES).find(|&i| !inside(near + step * i as f64)) {
+            None => tb,
+            Some(i) => bisect(near + step * i as f64, near + step * (i - 1) as f64, inside),
         };
         Some((near, far, d))
     };
@@ -409,15 +405,18 @@ fn trace_region(
     for i in 0..=RAYS {
         let t = lo + (hi - lo) * i as f64 / RAYS as f64;
         let present = run(t).is_some();
+        // The limiting ray itself may be a tie along its whole length (a bisector through the
+        // image): trace just inside it.
+        let nudge = 1e-4 * (hi - lo) / RAYS as f64;
         match (present, previous) {
             (true, None) if i > 0 => {
                 let prev_t = lo + (hi - lo) * (i - 1) as f64 / RAYS as f64;
-                current.push(bisect(prev_t, t, |u| run(u).is_some()));
+                current.push(bisect(prev_t, t, |u| run(u).is_some()) + nudge);
                 current.push(t);
             }
             (true, _) => current.push(t),
             (false, Some(p)) => {
-                current.push(bisect(t, p, |u| run(u).is_some()));
+                current.push(bisect(t, p, |u| run(u).is_some()) - nudge);
                 runs.push(std::mem::take(&mut current));
             }
             (false, None) => {}

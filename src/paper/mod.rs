@@ -1,6 +1,7 @@
 //! Reproductions of the examples of [LZT §3]: data and text for the runnable examples in
 //! `paper-examples/` and for the tests. Nothing here prints; the examples do.
 
+pub mod examples;
 pub mod strip;
 pub mod table;
 

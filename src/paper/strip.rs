@@ -189,6 +189,7 @@ pub fn unfold_strip<S: Scalar>(
     } else {
         (t_hi, t_lo)
     };
+    let (b0, b1) = (S::max_of(&b0, &S::zero()), S::min_of(&b1, &length));
     let along = dot(&to_source, &u) / &length;
     let height = cross(&u, &to_source) / &length;
     let height = if height.sign() == Sign::Negative {
