@@ -14,6 +14,8 @@
 pub mod benchmark_model;
 pub mod mesh;
 pub mod mmp;
+pub mod paper;
+pub mod render;
 pub mod scalar;
 
 pub use mesh::{EdgeId, FaceId, MeshError, TriMesh, ValidationReport, VertexId};

@@ -314,6 +314,77 @@ pub fn icosphere(subdivisions: u32) -> TriMesh {
     build(positions, faces)
 }
 
+/// The mesh of Example 1 [LZT §3]: a triangular prism over the right triangle `v1 v2 v3`
+/// (`v6 v5 v4` below it) capped by pyramids with apexes `v0` on top and `v7` below, 8 vertices and
+/// 12 faces. The paper gives the vertices and the eight faces its wedges cross; the other four
+/// (the quad `v1 v3 v4 v6` split along `v1 v4`, the caps' third faces) lie in the plane `x = y`.
+/// The surface is symmetric under `(x, y, z) -> (1 - y, 1 - x, z)`, which swaps `v1, v3` and
+/// `v4, v6` and fixes the edge `e2 = (v5, v7)`.
+pub fn paper_example1() -> TriMesh {
+    build(
+        vec![
+            [0.5, 0.5, 1.5],
+            [0.0, 0.0, 1.0],
+            [1.0, 0.0, 1.0],
+            [1.0, 1.0, 1.0],
+            [1.0, 1.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0],
+            [0.5, 0.5, -0.5],
+        ],
+        vec![
+            [0, 1, 2],
+            [0, 2, 3],
+            [0, 3, 1],
+            [1, 6, 2],
+            [2, 6, 5],
+            [2, 4, 3],
+            [2, 5, 4],
+            [1, 3, 4],
+            [1, 4, 6],
+            [5, 6, 7],
+            [4, 5, 7],
+            [6, 4, 7],
+        ],
+    )
+}
+
+/// The mesh of Example 3 [LZT §3]: the unit cube `[0, 1]^3` with its top fanned around the centre
+/// `v0`, 9 vertices and 14 faces. The paper gives the vertices and the faces its two wedges cross
+/// (which fix the diagonals of the sides `y = 0`, `y = 1` and of the bottom, `e0 = (v5, v7)`); the
+/// sides `x = 0` and `x = 1` are split along `v1 v8` and `v2 v7`.
+pub fn paper_example3() -> TriMesh {
+    build(
+        vec![
+            [0.5, 0.5, 1.0],
+            [0.0, 0.0, 1.0],
+            [1.0, 0.0, 1.0],
+            [1.0, 1.0, 1.0],
+            [0.0, 1.0, 1.0],
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+        ],
+        vec![
+            [0, 1, 2],
+            [0, 2, 3],
+            [0, 3, 4],
+            [0, 4, 1],
+            [1, 6, 2],
+            [1, 5, 6],
+            [3, 7, 4],
+            [4, 7, 8],
+            [5, 7, 6],
+            [5, 8, 7],
+            [2, 6, 7],
+            [2, 7, 3],
+            [1, 4, 8],
+            [1, 8, 5],
+        ],
+    )
+}
+
 /// The mesh of Example 4 [LZT §3]: 14 vertices and 24 faces, in the paper's order.
 pub fn paper_example4() -> TriMesh {
     build(
@@ -373,6 +444,8 @@ pub const SHAPE_NAMES: &[&str] = &[
     "l-shape:N",
     "square-with-hole:N",
     "convex:SEED,BOUNDARY,INTERIOR",
+    "paper-example-1",
+    "paper-example-3",
     "paper-example-4",
 ];
 
@@ -399,6 +472,8 @@ pub fn parse_shape(spec: &str) -> Option<TriMesh> {
         ("convex", &[seed, b, i]) => {
             random_convex_triangulation(seed, small(b, 10_000)?.max(3), i.min(100_000) as usize)
         }
+        ("paper-example-1", []) => paper_example1(),
+        ("paper-example-3", []) => paper_example3(),
         ("paper-example-4", []) => paper_example4(),
         _ => return None,
     })
@@ -428,6 +503,8 @@ mod tests {
             (octahedron(), 6, 8),
             (icosahedron(), 12, 20),
             (icosphere(2), 162, 320),
+            (paper_example1(), 8, 12),
+            (paper_example3(), 9, 14),
             (paper_example4(), 14, 24),
         ] {
             assert_eq!((mesh.vertex_count(), mesh.face_count()), (v, f));
@@ -439,7 +516,14 @@ mod tests {
 
     #[test]
     fn closed_shapes_face_outwards() {
-        for mesh in [tetrahedron(), cube(), octahedron(), icosphere(1)] {
+        for mesh in [
+            tetrahedron(),
+            cube(),
+            octahedron(),
+            icosphere(1),
+            paper_example1(),
+            paper_example3(),
+        ] {
             let centre = mesh
                 .positions()
                 .iter()
@@ -537,6 +621,8 @@ mod tests {
             (tetrahedron(), 8.0 / 3.0),
             (cube(), 1.0),
             (octahedron(), 4.0 / 3.0),
+            (paper_example1(), 2.0 / 3.0),
+            (paper_example3(), 1.0),
             (paper_example4(), f64::NAN),
             (icosahedron(), f64::NAN),
             (icosphere(3), f64::NAN),

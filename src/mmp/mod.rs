@@ -10,6 +10,7 @@ mod propagate;
 mod query;
 mod source;
 mod stats;
+mod subdivision;
 mod trace_back;
 mod unfold;
 mod wedge;
@@ -19,5 +20,8 @@ pub use field::GeodesicField;
 pub use propagate::{propagate, propagate_with_progress, Progress, PropagateOptions};
 pub use source::{PointError, SurfacePoint};
 pub use stats::{Eq2Counts, Stats};
+pub use subdivision::{
+    face_subdivision, polygon_area, Bisector, BisectorKind, FaceSubdivision, Point2, Region,
+};
 pub use trace_back::{GeodesicPath, TraceError};
 pub use wedge::{PseudoSource, Side, Wedge};

@@ -9,6 +9,7 @@ mod path;
 mod progress;
 mod spec;
 mod stats;
+mod subdivision;
 mod verify;
 mod wedges;
 
@@ -47,6 +48,9 @@ enum Command {
     BenchmarkModel(benchmark_model::BenchmarkModelArgs),
     /// Checks the engine on a benchmark model written by benchmark-model.
     Verify(verify::VerifyArgs),
+    /// The regions of one face, each closest to one image of a pseudo-source, and their
+    /// bisectors [LZT Property 4, Fig. 15]; optionally drawn as SVG.
+    Subdivision(subdivision::SubdivisionArgs),
 }
 
 /// The number type the engine runs on.
@@ -161,6 +165,7 @@ fn main() -> ExitCode {
         Command::Stats(args) => stats::run(args),
         Command::BenchmarkModel(args) => benchmark_model::run(args),
         Command::Verify(args) => verify::run(args),
+        Command::Subdivision(args) => subdivision::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,3 @@
+//! Drawings of results, as text in standard formats.
+
+pub mod svg;
