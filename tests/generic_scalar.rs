@@ -2,7 +2,7 @@
 //! `Clone` (as exact numbers will be) runs the same propagation and gets the same answers.
 
 use exact_geodesics::mesh::shapes;
-use exact_geodesics::scalar::{BisectorRoots, Scalar, Sign, SourceDistance};
+use exact_geodesics::scalar::{BisectorRoots, Field, Scalar, Sign, SourceDistance};
 use exact_geodesics::{propagate, PropagateOptions, SurfacePoint, TriMesh, VertexId};
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};
@@ -48,7 +48,7 @@ fn raw(d: &SourceDistance<CloneOnly>) -> SourceDistance<f64> {
 }
 
 /// Every decision is delegated to the f64 backend, so the results must be identical.
-impl Scalar for CloneOnly {
+impl Field for CloneOnly {
     fn from_f64(x: f64) -> Self {
         CloneOnly(x)
     }
@@ -56,7 +56,13 @@ impl Scalar for CloneOnly {
         self.0
     }
     fn sqrt(&self) -> Self {
-        CloneOnly(Scalar::sqrt(&self.0))
+        CloneOnly(Field::sqrt(&self.0))
+    }
+}
+
+impl Scalar for CloneOnly {
+    fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign {
+        f64::orientation([&p[0].0, &p[1].0], [&q[0].0, &q[1].0], [&r[0].0, &r[1].0])
     }
     fn sign(&self) -> Sign {
         self.0.sign()
@@ -86,12 +92,7 @@ impl Scalar for CloneOnly {
         lo: &Self,
         hi: &Self,
     ) -> BisectorRoots<Self> {
-        match f64::bisector_roots(&raw(a), &raw(b), &lo.0, &hi.0) {
-            BisectorRoots::None => BisectorRoots::None,
-            BisectorRoots::One(r) => BisectorRoots::One(CloneOnly(r)),
-            BisectorRoots::Two(r, s) => BisectorRoots::Two(CloneOnly(r), CloneOnly(s)),
-            BisectorRoots::Infinite => BisectorRoots::Infinite,
-        }
+        f64::bisector_roots(&raw(a), &raw(b), &lo.0, &hi.0).map(CloneOnly)
     }
 }
 

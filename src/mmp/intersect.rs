@@ -8,9 +8,9 @@
 //! wins only in its middle (Fig. 8c, Fig. 10).
 
 use super::propagate::{Engine, Slot, SlotState};
-use super::stats::Eq2Counts;
+use super::stats::{Eq2Counts, Eq2Decision};
 use super::wedge::Wedge;
-use crate::scalar::{BisectorRoots, Eq2Case, Scalar, SourceDistance};
+use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Scalar, Site, SourceDistance};
 use std::cmp::Ordering;
 
 /// Who owns a piece of the edge after an intersection.
@@ -68,6 +68,7 @@ fn min_on<S: Scalar>(d: &SourceDistance<S>, lo: &S, hi: &S, at_lo: &S, at_hi: &S
 /// functions keep the existing wedge (step 2.3.2). When one wedge is better at every point of
 /// the range by the bounds of convexity, eq. (2) has no root there and is not solved;
 /// otherwise its roots cut the range, and each piece goes to the wedge better at its middle.
+/// Returns the case and whether eq. (2) was solved.
 fn split_shared_range<S: Scalar>(
     counts: &mut Eq2Counts,
     pieces: &mut Vec<Piece<S>>,
@@ -76,11 +77,11 @@ fn split_shared_range<S: Scalar>(
     lo: S,
     hi: S,
     id: u32,
-) {
+) -> (Eq2Case, bool) {
     if S::same_distance_function(theirs, mine, &(hi.clone() - &lo)) {
         counts.count(Eq2Case::Infinite);
         push_piece(pieces, lo, hi, Owner::Old(id));
-        return;
+        return (Eq2Case::Infinite, true);
     }
     let (their_lo, their_hi) = (theirs.at(&lo), theirs.at(&hi));
     let (my_lo, my_hi) = (mine.at(&lo), mine.at(&hi));
@@ -88,16 +89,17 @@ fn split_shared_range<S: Scalar>(
     if min_on(mine, &lo, &hi, &my_lo, &my_hi).compare_distance(&their_max) != Ordering::Less {
         counts.count(Eq2Case::None);
         push_piece(pieces, lo, hi, Owner::Old(id));
-        return;
+        return (Eq2Case::None, false);
     }
     let my_max = S::max_of(&my_lo, &my_hi);
     if my_max.compare_distance(&min_on(theirs, &lo, &hi, &their_lo, &their_hi)) == Ordering::Less {
         counts.count(Eq2Case::None);
         push_piece(pieces, lo, hi, Owner::New);
-        return;
+        return (Eq2Case::None, false);
     }
     let roots = S::bisector_roots(theirs, mine, &lo, &hi);
-    counts.count(roots.case());
+    let case = roots.case();
+    counts.count(case);
     let (first, second) = match roots {
         BisectorRoots::One(r) => (Some(r), None),
         BisectorRoots::Two(r, s) => (Some(r), Some(s)),
@@ -115,12 +117,17 @@ fn split_shared_range<S: Scalar>(
         push_piece(pieces, start, end.clone(), owner);
         start = end;
     }
+    (case, true)
 }
 
 impl<S: Scalar> Engine<'_, S> {
     /// Inserts a wedge on its edge, intersecting it with the wedges there.
     pub(crate) fn insert(&mut self, w: Wedge<S>) {
         let e = w.edge;
+        S::locate(Site {
+            edge: Some(e.0),
+            what: "wedge intersection (eq. 2)",
+        });
         let length = self.unfolding.length(e).clone();
         if !S::has_extent(&w.b0, &w.b1, &length) {
             return;
@@ -151,7 +158,16 @@ impl<S: Scalar> Engine<'_, S> {
             let lo = S::max_of(&old.b0, &w.b0);
             let hi = S::min_of(&old.b1, &w.b1);
             let theirs = old.distance_function();
-            split_shared_range(
+            let record = self.record_decisions.then(|| {
+                let eq2 = Eq2Coefficients::new(&theirs, &mine, &lo);
+                let range = [lo.to_f64(), hi.to_f64()];
+                (
+                    old.pseudo_source,
+                    range,
+                    [eq2.a, eq2.b, eq2.c].map(|c| c.to_f64()),
+                )
+            });
+            let (case, solved) = split_shared_range(
                 &mut self.stats.eq2,
                 &mut pieces,
                 &theirs,
@@ -160,6 +176,17 @@ impl<S: Scalar> Engine<'_, S> {
                 hi.clone(),
                 id,
             );
+            if let Some((existing, range, coefficients)) = record {
+                self.stats.decisions.push(Eq2Decision {
+                    edge: e.0,
+                    existing,
+                    arriving: w.pseudo_source,
+                    range,
+                    case,
+                    solved,
+                    coefficients,
+                });
+            }
             if old.b1.compare(&w.b1) == Ordering::Greater {
                 push_piece(&mut pieces, w.b1.clone(), old.b1.clone(), Owner::Old(id));
             }

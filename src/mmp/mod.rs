@@ -19,7 +19,7 @@ pub use coverage::{CoverageIssue, CoverageReport};
 pub use field::GeodesicField;
 pub use propagate::{propagate, propagate_with_progress, Progress, PropagateOptions};
 pub use source::{PointError, SurfacePoint};
-pub use stats::{Eq2Counts, Stats};
+pub use stats::{Eq2Counts, Eq2Decision, Stats};
 pub use subdivision::{
     face_subdivision, polygon_area, Bisector, BisectorKind, FaceSubdivision, Point2, Region,
 };

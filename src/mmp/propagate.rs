@@ -8,7 +8,7 @@ use super::stats::Stats;
 use super::unfold::{planar_coordinates, position_in_space, FaceLayout, Planar, Unfolding};
 use super::wedge::{PseudoSource, Side, Wedge};
 use crate::mesh::{EdgeId, TriMesh, VertexId};
-use crate::scalar::{Scalar, Sign};
+use crate::scalar::{Scalar, Sign, Site};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 use std::time::Instant;
@@ -19,6 +19,9 @@ pub struct PropagateOptions {
     /// Stop once every point closer than this is final; farther points are reported as
     /// unreachable (+infinity). `None` propagates over the whole surface.
     pub max_distance: Option<f64>,
+    /// Keep a log of every meeting of two wedges on an edge ([`Stats::decisions`]), for
+    /// comparing backends decision by decision.
+    pub record_decisions: bool,
 }
 
 impl PropagateOptions {
@@ -84,12 +87,15 @@ pub fn propagate_with_progress<'m, S: Scalar>(
         .map(|p| p.validated(mesh))
         .collect::<Result<Vec<_>, _>>()?;
     let started = Instant::now();
+    S::take_counts();
     let mut engine = Engine::new(mesh, options);
     for (k, point) in sources.iter().enumerate() {
         engine.emit_source(k, point);
     }
     engine.run(&mut progress);
     engine.stats.propagation_seconds = started.elapsed().as_secs_f64();
+    engine.stats.backend = S::take_counts();
+    S::locate(Site::ANYWHERE);
     Ok(engine.finish(sources))
 }
 
@@ -159,6 +165,7 @@ pub(crate) struct Engine<'m, S: Scalar> {
     emitted_at: Vec<f64>,
     queue: BinaryHeap<Event>,
     max_distance: f64,
+    pub(crate) record_decisions: bool,
     reached: usize,
     pub(crate) stats: Stats,
     pub(crate) scratch: Scratch<S>,
@@ -177,6 +184,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             emitted_at: vec![f64::INFINITY; mesh.vertex_count()],
             queue: BinaryHeap::new(),
             max_distance: options.max_distance.unwrap_or(f64::INFINITY),
+            record_decisions: options.record_decisions,
             reached: 0,
             stats: Stats::default(),
             scratch: Scratch::default(),
@@ -416,6 +424,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// the rays from the pseudo-source through `b0` and `b1` cut the face's two other edges, and
     /// the pieces between them become new wedges with the same pseudo-source.
     fn propagate_wedge(&mut self, w: &Wedge<S>) {
+        S::locate(Site {
+            edge: Some(w.edge.0),
+            what: "propagation across a face",
+        });
         if w.source_y.sign() == Sign::Zero {
             return; // A wedge along its edge's line sees nothing beyond the line.
         }

@@ -1,6 +1,7 @@
 //! What happened during a propagation: counters that make every run explainable.
 
-use crate::scalar::Eq2Case;
+use super::wedge::PseudoSource;
+use crate::scalar::{DecisionCounts, Eq2Case};
 use serde::Serialize;
 
 /// How often each case of Property 1 [LZT §3] arose when two wedges met on an edge.
@@ -47,4 +48,31 @@ pub struct Stats {
     pub peak_wedge_bytes: usize,
     /// Wall-clock seconds spent propagating.
     pub propagation_seconds: f64,
+    /// How the backend settled its decisions (empty for `f64`, which does not certify).
+    pub backend: DecisionCounts,
+    /// Every meeting of two wedges on an edge, when [`PropagateOptions::record_decisions`]
+    /// asks for it.
+    ///
+    /// [`PropagateOptions::record_decisions`]: super::PropagateOptions::record_decisions
+    pub decisions: Vec<Eq2Decision>,
+}
+
+/// One meeting of two wedges on a shared range of an edge [LZT §4], as the backend decided it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Eq2Decision {
+    /// The edge (index).
+    pub edge: u32,
+    /// The pseudo-source of the wedge already on the edge.
+    pub existing: PseudoSource,
+    /// The pseudo-source of the arriving wedge.
+    pub arriving: PseudoSource,
+    /// The shared range, as `f64`.
+    pub range: [f64; 2],
+    /// The case the backend decided (`none` also when convexity bounds settled it).
+    pub case: Eq2Case,
+    /// Whether eq. (2) was solved (`false`: one wedge was better throughout by the bounds).
+    pub solved: bool,
+    /// `A`, `B`, `C` of eq. (2) with positions from the range's start, as the backend's values
+    /// seen in `f64`.
+    pub coefficients: [f64; 3],
 }

@@ -214,17 +214,16 @@ impl<S: Scalar> GeodesicField<'_, S> {
             return false;
         };
         // u runs along the edge away from the vertex, c to the apex, d to the pseudo-source.
+        // u is (+-1, 0), so the orientations of (u, c) and (u, d) are signs of heights.
         let along = if at.x.sign() == Sign::Zero {
-            S::from_f64(1.0)
+            Sign::Positive
         } else {
-            S::from_f64(-1.0)
+            Sign::Negative
         };
-        let (cx, dx) = (cx.clone() - &at.x, w.source_x.clone() - &at.x);
-        let cross = |ax: &S, ay: &S, bx: &S, by: &S| ax.clone() * by - ay.clone() * bx;
         let zero = S::zero();
-        let orientation = cross(&along, &zero, &cx, h).sign();
-        let u_d = cross(&along, &zero, &dx, &w.source_y).sign();
-        let d_c = cross(&dx, &w.source_y, &cx, h).sign();
+        let orientation = along.times(h.sign());
+        let u_d = along.times(w.source_y.sign());
+        let d_c = S::orientation([&at.x, &zero], [&w.source_x, &w.source_y], [cx, h]);
         [u_d, d_c]
             .iter()
             .all(|&s| s == orientation || s == Sign::Zero)
@@ -357,7 +356,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             let near = match walk.start {
                 Some(v) if v == p0 => false,
                 Some(v) if v == p1 => true,
-                _ => cross(cx.clone() - &r.x, cy.clone() - &r.y).sign() == Sign::Positive,
+                _ => S::orientation([&r.x, &r.y], [&s.x, &s.y], [&cx, &cy]) == Sign::Positive,
             };
             let chosen = exit(near);
             let end = self.end_vertex(chosen.0, &chosen.1);

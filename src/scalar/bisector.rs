@@ -1,6 +1,6 @@
 //! The bisector of two wedges on an edge: eq. (1) and its quadratic form eq. (2) [LZT §2].
 
-use super::Scalar;
+use super::Field;
 
 /// The distance function of a wedge along its edge: `D(t) = sigma + sqrt((t - x)^2 + y^2)`,
 /// where `(x, y)` is the unfolded pseudo-source in the edge's frame and `sigma` its distance to
@@ -15,7 +15,7 @@ pub struct SourceDistance<S> {
     pub sigma: S,
 }
 
-impl<S: Scalar> SourceDistance<S> {
+impl<S: Field> SourceDistance<S> {
     /// `D(t)`: the geodesic distance through this pseudo-source to the point `t` of the edge.
     #[inline]
     pub fn at(&self, t: &S) -> S {
@@ -37,7 +37,7 @@ pub struct Eq2Coefficients<S> {
     pub c: S,
 }
 
-impl<S: Scalar> Eq2Coefficients<S> {
+impl<S: Field> Eq2Coefficients<S> {
     /// Eq. (2) for two wedges, with positions measured from `origin` on the edge (the engine
     /// passes the left end of the shared range, which keeps the f64 coefficients small).
     pub fn new(w1: &SourceDistance<S>, w2: &SourceDistance<S>, origin: &S) -> Self {
@@ -74,6 +74,16 @@ pub enum BisectorRoots<S> {
 }
 
 impl<S> BisectorRoots<S> {
+    /// The same case with every root mapped by `f`.
+    pub fn map<T>(self, f: impl Fn(S) -> T) -> BisectorRoots<T> {
+        match self {
+            BisectorRoots::None => BisectorRoots::None,
+            BisectorRoots::One(r) => BisectorRoots::One(f(r)),
+            BisectorRoots::Two(r, s) => BisectorRoots::Two(f(r), f(s)),
+            BisectorRoots::Infinite => BisectorRoots::Infinite,
+        }
+    }
+
     /// Which of the four cases of Property 1 this is.
     pub fn case(&self) -> Eq2Case {
         match self {

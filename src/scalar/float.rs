@@ -4,7 +4,7 @@
 //! contains no epsilon. All tolerances are relative to a length of the edge at hand, so results
 //! do not depend on the scale of the model (compare Observation 3 [LZT §6]).
 
-use super::{BisectorRoots, Eq2Coefficients, Scalar, Sign, SourceDistance};
+use super::{BisectorRoots, Eq2Coefficients, Field, Scalar, Sign, SourceDistance};
 use std::cmp::Ordering;
 
 /// The f64 backend's tolerance policy, one constant per kind of decision.
@@ -28,7 +28,7 @@ impl FloatTolerance {
     pub const ROOT_RESIDUAL: f64 = 1e-9;
 }
 
-impl Scalar for f64 {
+impl Field for f64 {
     #[inline(always)]
     fn from_f64(x: f64) -> Self {
         x
@@ -42,6 +42,13 @@ impl Scalar for f64 {
     #[inline(always)]
     fn sqrt(&self) -> Self {
         self.max(0.0).sqrt()
+    }
+}
+
+impl Scalar for f64 {
+    #[inline(always)]
+    fn orientation(p: [&f64; 2], q: [&f64; 2], r: [&f64; 2]) -> Sign {
+        ((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])).sign()
     }
 
     #[inline(always)]

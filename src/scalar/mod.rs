@@ -1,21 +1,38 @@
 //! The number types the engine runs on, in the style of CGAL's kernels: the engine asks a
-//! [`Scalar`] for its constructions (`+ - * /`, square roots) and for its decisions (signs,
-//! comparisons, the roots of eq. (2) [LZT §2]) and never asks which backend it runs on.
+//! [`Scalar`] for its constructions (`+ - * /`, square roots: the [`Field`] part) and for its
+//! decisions (signs, comparisons, orientations, the roots of eq. (2) [LZT §2]) and never asks
+//! which backend it runs on.
 //!
-//! How exact a decision is belongs to the backend: [`f64`] decides with the one documented
-//! tolerance policy in [`float`]; exact backends decide with certified signs.
+//! How exact a decision is belongs to the backend:
+//! - [`f64`] decides with the one documented tolerance policy in [`float`];
+//! - [`Adaptive`] keeps `f64` values but decides every predicate exactly for those values
+//!   (Shewchuk's orientation from `robust`, eq. (2) by an interval filter and exact rationals);
+//! - [`Real`] is exact: rationals with exact square roots and certified signs.
+//!
+//! Backends that certify count their decisions ([`DecisionCounts`]) per thread; the engine
+//! collects them per propagation through [`Scalar::take_counts`].
 
+mod adaptive;
+mod audit;
 mod bisector;
+pub mod exact;
 pub mod float;
+mod interval;
+mod roots;
 
+pub use adaptive::Adaptive;
+pub use audit::{DecisionCounts, DecisionSite, Site};
 pub use bisector::{BisectorRoots, Eq2Case, Eq2Coefficients, SourceDistance};
+pub use exact::Real;
+pub use interval::Interval;
 
 use std::cmp::Ordering;
 use std::fmt::Debug;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// Sign of a number, as decided by its backend.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
 pub enum Sign {
     /// Less than zero.
     Negative,
@@ -25,13 +42,35 @@ pub enum Sign {
     Positive,
 }
 
-/// A number type for the MMP engine: an ordered field with square roots of non-negative
-/// numbers, plus the decisions MMP takes.
+impl Sign {
+    /// The sign of a product.
+    #[inline]
+    pub fn times(self, other: Sign) -> Sign {
+        match (self, other) {
+            (Sign::Zero, _) | (_, Sign::Zero) => Sign::Zero,
+            (a, b) if a == b => Sign::Positive,
+            _ => Sign::Negative,
+        }
+    }
+
+    /// The ordering of `x` against zero, for a sign of `x`.
+    #[inline]
+    pub fn as_ordering(self) -> Ordering {
+        match self {
+            Sign::Negative => Ordering::Less,
+            Sign::Zero => Ordering::Equal,
+            Sign::Positive => Ordering::Greater,
+        }
+    }
+}
+
+/// The constructions of a number type: an ordered field with square roots of non-negative
+/// numbers. Shared by the engine's [`Scalar`]s and by the number types that only filter or
+/// certify signs ([`Interval`]).
 ///
 /// Values are `Clone`, not `Copy`, so that exact numbers (big rationals, expression DAGs) fit;
 /// operators take their right operand by reference where a clone would otherwise be needed.
-/// Decisions have no default bodies: a backend states how it takes each one.
-pub trait Scalar:
+pub trait Field:
     Clone
     + Debug
     + Send
@@ -56,7 +95,14 @@ pub trait Scalar:
     /// The square root of `max(self, 0)`. Callers pass quantities that are non-negative in exact
     /// arithmetic (squared lengths, heights); a backend with rounding may see a tiny negative.
     fn sqrt(&self) -> Self;
+}
 
+/// A number type for the MMP engine: a [`Field`] plus the decisions MMP takes.
+///
+/// Decisions have no default bodies: a backend states how it takes each one. The bookkeeping
+/// hooks ([`Scalar::locate`], [`Scalar::take_counts`]) default to nothing, which is what a
+/// backend that does not certify wants (the `f64` engine pays nothing for them).
+pub trait Scalar: Field {
     /// The sign of `self`.
     fn sign(&self) -> Sign;
 
@@ -89,6 +135,21 @@ pub trait Scalar:
         lo: &Self,
         hi: &Self,
     ) -> BisectorRoots<Self>;
+
+    /// The orientation of the triangle `(p, q, r)`: the sign of `(q - p) x (r - p)`, positive
+    /// when `r` lies to the left of the line from `p` to `q`.
+    fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign;
+
+    /// Tells the backend where the engine's next decisions are taken, so that a decision it
+    /// cannot certify is reported with its place.
+    #[inline(always)]
+    fn locate(_site: Site) {}
+
+    /// The decision counters of this thread since the last call, and resets them.
+    #[inline(always)]
+    fn take_counts() -> DecisionCounts {
+        DecisionCounts::default()
+    }
 
     /// Zero.
     #[inline]

@@ -58,6 +58,22 @@ enum Command {
 pub enum Backend {
     /// Hardware floating point with the documented tolerance policy.
     F64,
+    /// f64 values, every predicate decided exactly for them (Shewchuk's adaptive predicates,
+    /// interval filter + exact rationals for eq. (2)).
+    Adaptive,
+    /// Exact reals (rationals with exact square roots) with certified signs.
+    Exact,
+}
+
+impl Backend {
+    /// The name used on the command line and in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Backend::F64 => "f64",
+            Backend::Adaptive => "adaptive",
+            Backend::Exact => "exact",
+        }
+    }
 }
 
 /// Arguments every command shares: the mesh, the sources, the backend.
@@ -71,6 +87,10 @@ pub struct Common {
     /// Number type of the engine.
     #[arg(long, value_enum, default_value_t = Backend::F64)]
     pub backend: Backend,
+    /// Largest precision (bits) the exact backend tries before it records a decision as
+    /// uncertified.
+    #[arg(long, default_value_t = exact_geodesics::scalar::exact::DEFAULT_PRECISION_CAP)]
+    pub precision_cap: u32,
     /// Stop propagating at this distance; farther vertices are reported unreachable (inf).
     #[arg(long)]
     pub max_distance: Option<f64>,
@@ -102,11 +122,13 @@ impl Common {
                 ));
             }
         }
+        exact_geodesics::scalar::exact::set_precision_cap(self.precision_cap);
         Ok(Job {
             mesh,
             sources,
             options: PropagateOptions {
                 max_distance: self.max_distance,
+                record_decisions: false,
             },
             backend: self.backend,
         })
@@ -132,6 +154,14 @@ macro_rules! with_backend {
         match $backend {
             Backend::F64 => {
                 type $s = f64;
+                $body
+            }
+            Backend::Adaptive => {
+                type $s = exact_geodesics::scalar::Adaptive;
+                $body
+            }
+            Backend::Exact => {
+                type $s = exact_geodesics::scalar::Real;
                 $body
             }
         }

@@ -50,7 +50,8 @@ fn report<S: Scalar>(
     let coverage = field.check_coverage();
     serde_json::json!({
         "mesh": name,
-        "backend": format!("{backend:?}").to_lowercase(),
+        "backend": backend.name(),
+        "backend_decisions": stats.backend,
         "vertices": mesh.vertex_count(),
         "faces": mesh.face_count(),
         "edges": mesh.edge_count(),

@@ -1,0 +1,232 @@
+//! The adaptive-predicate backend: `f64` values and `f64` constructions, but every decision is
+//! exact for the `f64` values it is asked about, so decisions are consistent with each other
+//! even where rounding has moved the geometry.
+//!
+//! - Comparisons and signs of stored values are exact as they stand (no tolerance).
+//! - Orientation is Shewchuk's adaptive `orient2d` (the `robust` crate).
+//! - Eq. (2) and the validity of its roots (Property 1) are decided on the `f64` inputs by an
+//!   [`Interval`] filter; only when it cannot tell, by the exact stage: the same
+//!   decisions on exact [`Real`]s built from the inputs (exact rationals, with the square root
+//!   of the discriminant certified by refinement).
+//!
+//! The filter and exact-stage counts of those predicates are reported per run; comparisons of
+//! stored values are exact by themselves and not counted.
+
+use super::audit::{self, DecisionCounts, Settled, Site};
+use super::roots::{self, CertifiedSign};
+use super::{BisectorRoots, Field, Interval, Real, Scalar, Sign, SourceDistance};
+use std::cmp::Ordering;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// An `f64` whose decisions are exact predicates of its value.
+#[derive(Clone, Copy, Debug, PartialEq, PartialOrd, Default)]
+pub struct Adaptive(pub f64);
+
+macro_rules! adaptive_ops {
+    ($($tr:ident $f:ident),*) => {$(
+        impl $tr for Adaptive {
+            type Output = Adaptive;
+            #[inline(always)]
+            fn $f(self, o: Adaptive) -> Adaptive {
+                Adaptive($tr::$f(self.0, o.0))
+            }
+        }
+        impl<'a> $tr<&'a Adaptive> for Adaptive {
+            type Output = Adaptive;
+            #[inline(always)]
+            fn $f(self, o: &'a Adaptive) -> Adaptive {
+                Adaptive($tr::$f(self.0, o.0))
+            }
+        }
+    )*};
+}
+adaptive_ops!(Add add, Sub sub, Mul mul, Div div);
+
+impl Neg for Adaptive {
+    type Output = Adaptive;
+    #[inline(always)]
+    fn neg(self) -> Adaptive {
+        Adaptive(-self.0)
+    }
+}
+
+impl Field for Adaptive {
+    #[inline(always)]
+    fn from_f64(x: f64) -> Self {
+        Adaptive(x)
+    }
+
+    #[inline(always)]
+    fn to_f64(&self) -> f64 {
+        self.0
+    }
+
+    #[inline(always)]
+    fn sqrt(&self) -> Self {
+        Adaptive(self.0.max(0.0).sqrt())
+    }
+}
+
+/// A wedge's distance function with its `f64` inputs as another number type.
+fn lift<T: Field>(d: &SourceDistance<Adaptive>) -> SourceDistance<T> {
+    SourceDistance {
+        x: T::from_f64(d.x.0),
+        y: T::from_f64(d.y.0),
+        sigma: T::from_f64(d.sigma.0),
+    }
+}
+
+/// Runs a predicate through the interval filter, then, if it cannot tell, exactly.
+fn filtered<R>(filter: impl FnOnce() -> Option<R>, exact: impl FnOnce() -> Option<R>) -> R {
+    if let Some(r) = filter() {
+        audit::record(Settled::Filter, || [0.0; 2]);
+        return r;
+    }
+    audit::record(Settled::Refinement, || [0.0; 2]);
+    exact().expect("exact reals decide every sign")
+}
+
+/// The exact sign of an `f64`.
+#[inline(always)]
+fn sign_of(x: f64) -> Sign {
+    if x > 0.0 {
+        Sign::Positive
+    } else if x < 0.0 {
+        Sign::Negative
+    } else {
+        Sign::Zero
+    }
+}
+
+/// Exact comparison of two `f64` values (`-0 = 0`; NaN, which the engine never produces,
+/// compares equal).
+#[inline(always)]
+fn cmp(a: f64, b: f64) -> Ordering {
+    a.partial_cmp(&b).unwrap_or(Ordering::Equal)
+}
+
+impl Scalar for Adaptive {
+    #[inline(always)]
+    fn sign(&self) -> Sign {
+        sign_of(self.0)
+    }
+
+    #[inline(always)]
+    fn compare(&self, other: &Self) -> Ordering {
+        cmp(self.0, other.0)
+    }
+
+    #[inline(always)]
+    fn compare_distance(&self, other: &Self) -> Ordering {
+        cmp(self.0, other.0)
+    }
+
+    #[inline(always)]
+    fn has_extent(lo: &Self, hi: &Self, _scale: &Self) -> bool {
+        hi.0 > lo.0
+    }
+
+    #[inline(always)]
+    fn within(x: &Self, lo: &Self, hi: &Self, _scale: &Self) -> bool {
+        x.0 >= lo.0 && x.0 <= hi.0
+    }
+
+    fn same_distance_function(
+        a: &SourceDistance<Self>,
+        b: &SourceDistance<Self>,
+        _scale: &Self,
+    ) -> bool {
+        filtered(
+            || roots::same_distance_function::<Interval>(&lift(a), &lift(b)),
+            || roots::same_distance_function::<Exact>(&lift(a), &lift(b)),
+        )
+    }
+
+    fn bisector_roots(
+        a: &SourceDistance<Self>,
+        b: &SourceDistance<Self>,
+        lo: &Self,
+        hi: &Self,
+    ) -> BisectorRoots<Self> {
+        let roots = filtered(
+            || {
+                let (lo, hi) = (Interval::point(lo.0), Interval::point(hi.0));
+                roots::bisector_roots::<Interval>(&lift(a), &lift(b), &lo, &hi)
+                    .map(|r| r.map(|t| t.to_f64()))
+            },
+            || {
+                let (lo, hi) = (Exact::from_f64(lo.0), Exact::from_f64(hi.0));
+                roots::bisector_roots::<Exact>(&lift(a), &lift(b), &lo, &hi)
+                    .map(|r| r.map(|t| t.0.to_f64()))
+            },
+        );
+        roots.map(Adaptive)
+    }
+
+    #[inline]
+    fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign {
+        let c = |p: [&Self; 2]| robust::Coord {
+            x: p[0].0,
+            y: p[1].0,
+        };
+        sign_of(robust::orient2d(c(p), c(q), c(r)))
+    }
+
+    fn locate(site: Site) {
+        audit::locate(site);
+    }
+
+    fn take_counts() -> DecisionCounts {
+        audit::take()
+    }
+}
+
+/// Exact reals whose signs are not counted as decisions of their own: the adaptive backend
+/// counts its predicate once, as settled by the exact stage.
+#[derive(Clone, Debug)]
+struct Exact(Real);
+
+macro_rules! exact_ops {
+    ($($tr:ident $f:ident),*) => {$(
+        impl $tr for Exact {
+            type Output = Exact;
+            fn $f(self, o: Exact) -> Exact {
+                Exact($tr::$f(self.0, o.0))
+            }
+        }
+        impl<'a> $tr<&'a Exact> for Exact {
+            type Output = Exact;
+            fn $f(self, o: &'a Exact) -> Exact {
+                Exact($tr::$f(self.0, &o.0))
+            }
+        }
+    )*};
+}
+exact_ops!(Add add, Sub sub, Mul mul, Div div);
+
+impl Neg for Exact {
+    type Output = Exact;
+    fn neg(self) -> Exact {
+        Exact(-self.0)
+    }
+}
+
+impl Field for Exact {
+    fn from_f64(x: f64) -> Self {
+        Exact(Real::from_f64(x))
+    }
+
+    fn to_f64(&self) -> f64 {
+        self.0.to_f64()
+    }
+
+    fn sqrt(&self) -> Self {
+        Exact(self.0.sqrt())
+    }
+}
+
+impl CertifiedSign for Exact {
+    fn certified_sign(&self) -> Option<Sign> {
+        Some(self.0.certified_sign().0)
+    }
+}

@@ -1,0 +1,102 @@
+//! The decision counters of certifying backends, kept per thread: the engine runs one
+//! propagation on one thread, and reads them through [`Scalar::take_counts`](super::Scalar).
+
+use serde::Serialize;
+use std::cell::{Cell, RefCell};
+
+/// Where the engine takes a decision: the edge (by index, when there is one) and what it is
+/// deciding.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub struct Site {
+    /// The edge whose wedges are being decided, if any.
+    pub edge: Option<u32>,
+    /// What is being decided, in the paper's words (e.g. "eq. (2) on a shared range").
+    pub what: &'static str,
+}
+
+impl Site {
+    /// No particular place (queries after the propagation).
+    pub const ANYWHERE: Site = Site {
+        edge: None,
+        what: "query",
+    };
+}
+
+/// A decision a backend could not certify within its precision cap.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct DecisionSite {
+    /// Where the engine took it.
+    pub site: Site,
+    /// The bits of precision reached.
+    pub precision: u32,
+    /// An enclosure of the value whose sign was asked, as `f64` bounds.
+    pub enclosure: [f64; 2],
+}
+
+/// How a backend settled the decisions of one run.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct DecisionCounts {
+    /// Decisions asked of the backend.
+    pub decisions: u64,
+    /// Settled by the floating-point filter (an `f64` interval or error bound).
+    pub by_filter: u64,
+    /// Settled by the exact stage: exact rationals, or multiple-precision intervals refined
+    /// until they exclude zero.
+    pub by_refinement: u64,
+    /// Values proved to be exactly zero by the exact stage (a separation bound or a symbolic
+    /// identity); a zero the filter sees as the point interval `[0, 0]` counts as filtered.
+    pub certified_zeros: u64,
+    /// Decisions not certified within the precision cap (reported, never passed off as exact).
+    pub uncertified: u64,
+    /// The first uncertified decisions, with their places.
+    pub uncertified_sites: Vec<DecisionSite>,
+}
+
+/// How many uncertified decisions keep their place in [`DecisionCounts::uncertified_sites`].
+const KEPT_SITES: usize = 64;
+
+/// How one decision was settled.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Settled {
+    Filter,
+    Refinement,
+    CertifiedZero,
+    Uncertified { precision: u32 },
+}
+
+thread_local! {
+    static COUNTS: RefCell<DecisionCounts> = RefCell::new(DecisionCounts::default());
+    static SITE: Cell<Site> = const { Cell::new(Site::ANYWHERE) };
+}
+
+pub(crate) fn locate(site: Site) {
+    SITE.with(|s| s.set(site));
+}
+
+/// Counts one decision; `enclosure` is only read for uncertified ones.
+pub(crate) fn record(settled: Settled, enclosure: impl FnOnce() -> [f64; 2]) {
+    COUNTS.with(|c| {
+        let mut c = c.borrow_mut();
+        c.decisions += 1;
+        match settled {
+            Settled::Filter => c.by_filter += 1,
+            Settled::Refinement => c.by_refinement += 1,
+            Settled::CertifiedZero => c.certified_zeros += 1,
+            Settled::Uncertified { precision } => {
+                c.uncertified += 1;
+                if c.uncertified_sites.len() < KEPT_SITES {
+                    let site = SITE.with(Cell::get);
+                    c.uncertified_sites.push(DecisionSite {
+                        site,
+                        precision,
+                        enclosure: enclosure(),
+                    });
+                }
+            }
+        }
+    });
+}
+
+pub(crate) fn take() -> DecisionCounts {
+    COUNTS.with(|c| std::mem::take(&mut *c.borrow_mut()))
+}

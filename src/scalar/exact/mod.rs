@@ -1,0 +1,308 @@
+//! The exact backend: real numbers built from rationals with `+ - * /` and square roots, with
+//! certified signs, in the manner of CORE's `Expr` and LEDA's `real`.
+//!
+//! A [`Real`] is a node of an expression DAG over rational leaves (an `f64` input converts
+//! exactly). Its sign is decided in stages, each counted ([`DecisionCounts`]):
+//! 1. the `f64` interval computed when the node was built (the filter);
+//! 2. without square roots below it, exact rational evaluation; with them, MPFR intervals at
+//!    doubling precision until the enclosure excludes zero;
+//! 3. a zero is certified when the enclosure is smaller than the BFMSS separation bound
+//!    [BFMSS01] (a non-zero value cannot be that small), or when the DAG is zero by structure;
+//! 4. a decision that reaches the precision cap ([`set_precision_cap`]) without either is
+//!    *uncertified*: the value is then within `2^-cap` of zero, it is treated as zero (a tie),
+//!    and it is recorded with its place, never passed off as exact.
+//!
+//! \[BFMSS01\] Burnikel, Funke, Mehlhorn, Schirra, Schmitt, *A separation bound for real
+//! algebraic expressions*, ESA 2001.
+
+mod node;
+mod normal_form;
+mod refine;
+
+use super::audit::{self, DecisionCounts, Settled, Site};
+use super::roots::{self, CertifiedSign};
+use super::{BisectorRoots, Field, Interval, Scalar, Sign, SourceDistance};
+use node::Node;
+use rug::{Float, Rational};
+use std::cmp::Ordering;
+use std::fmt;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+use std::sync::atomic::{AtomicU32, Ordering as AtomicOrdering};
+use std::sync::Arc;
+
+/// The precision cap, in bits, used unless [`set_precision_cap`] says otherwise.
+pub const DEFAULT_PRECISION_CAP: u32 = 8192;
+
+/// The first precision of the exact stage, in bits.
+const FIRST_PRECISION: u32 = 128;
+
+static PRECISION_CAP: AtomicU32 = AtomicU32::new(DEFAULT_PRECISION_CAP);
+
+/// Sets the largest precision, in bits, at which a sign is sought before the decision is
+/// recorded as uncertified (at least 128). Applies to every thread.
+pub fn set_precision_cap(bits: u32) {
+    PRECISION_CAP.store(bits.max(FIRST_PRECISION), AtomicOrdering::Relaxed);
+}
+
+/// The current precision cap, in bits.
+pub fn precision_cap() -> u32 {
+    PRECISION_CAP.load(AtomicOrdering::Relaxed)
+}
+
+/// How the sign of a [`Real`] was established.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Certificate {
+    /// The `f64` interval filter excluded zero (or was the point zero).
+    Filter,
+    /// Exact rational evaluation or a refined interval excluded zero.
+    Refinement,
+    /// Proved zero: the enclosure fell below the separation bound, or by rational evaluation.
+    CertifiedZero,
+    /// Not established within the precision cap (bits reached); the sign given is zero.
+    Uncertified(u32),
+}
+
+impl Certificate {
+    /// Whether the sign is proved.
+    pub fn is_certified(self) -> bool {
+        !matches!(self, Certificate::Uncertified(_))
+    }
+}
+
+/// An exact real number: an expression DAG over rationals with `+ - * /` and `sqrt`.
+#[derive(Clone)]
+pub struct Real(Arc<Node>);
+
+impl Real {
+    /// The exact value of a rational.
+    pub fn from_rational(r: Rational) -> Real {
+        Real(Node::leaf(r))
+    }
+
+    /// The exact value of an integer.
+    pub fn from_integer(i: i64) -> Real {
+        Real::from_rational(Rational::from(i))
+    }
+
+    /// The sign and how it was established, without counting the decision.
+    pub fn certified_sign(&self) -> (Sign, Certificate) {
+        let node = &self.0;
+        if let Some(s) = node.filter.sign() {
+            return (s, Certificate::Filter);
+        }
+        if !node.has_sqrt {
+            let sign = match refine::rational_value(node).cmp0() {
+                Ordering::Less => Sign::Negative,
+                Ordering::Equal => return (Sign::Zero, Certificate::CertifiedZero),
+                Ordering::Greater => Sign::Positive,
+            };
+            return (sign, Certificate::Refinement);
+        }
+        let (lo, hi) = refine::enclosure(node, FIRST_PRECISION);
+        if lo.cmp0() == Some(Ordering::Greater) {
+            return (Sign::Positive, Certificate::Refinement);
+        }
+        if hi.cmp0() == Some(Ordering::Less) {
+            return (Sign::Negative, Certificate::Refinement);
+        }
+        if normal_form::normal_form(node).is_some_and(|nf| nf.is_zero()) {
+            return (Sign::Zero, Certificate::CertifiedZero);
+        }
+        let cap = precision_cap();
+        let zero_bits = refine::zero_bound_bits(node, cap);
+        let mut precision = 2 * FIRST_PRECISION;
+        loop {
+            let (lo, hi) = refine::enclosure(node, precision);
+            if lo.cmp0() == Some(Ordering::Greater) {
+                return (Sign::Positive, Certificate::Refinement);
+            }
+            if hi.cmp0() == Some(Ordering::Less) {
+                return (Sign::Negative, Certificate::Refinement);
+            }
+            if let Some(bits) = zero_bits {
+                if below(&lo, bits) && below(&hi, bits) {
+                    return (Sign::Zero, Certificate::CertifiedZero);
+                }
+            }
+            if precision >= cap {
+                return (Sign::Zero, Certificate::Uncertified(precision));
+            }
+            precision = precision.saturating_mul(2).min(cap);
+        }
+    }
+
+    /// Whether the value is shown positive by refinement alone (no zero certificate), within
+    /// a modest precision.
+    fn positive_without_zero_test(&self) -> bool {
+        let mut precision = FIRST_PRECISION;
+        while precision <= 1024 {
+            let (lo, hi) = refine::enclosure(&self.0, precision);
+            if lo.cmp0() == Some(Ordering::Greater) {
+                return true;
+            }
+            if hi.cmp0() == Some(Ordering::Less) {
+                return false;
+            }
+            precision *= 2;
+        }
+        false
+    }
+
+    /// An `f64` enclosure of the value (from the filter, or refined when the filter is wide).
+    pub fn enclosure(&self) -> [f64; 2] {
+        let f = self.0.filter;
+        if f.lo.is_finite() && f.hi.is_finite() {
+            return [f.lo, f.hi];
+        }
+        let (lo, hi) = refine::enclosure(&self.0, FIRST_PRECISION);
+        [
+            lo.to_f64_round(rug::float::Round::Down),
+            hi.to_f64_round(rug::float::Round::Up),
+        ]
+    }
+
+    /// The sign, counted as a decision of the current run.
+    fn decide(&self) -> Sign {
+        let (sign, certificate) = self.certified_sign();
+        let settled = match certificate {
+            Certificate::Filter => Settled::Filter,
+            Certificate::Refinement => Settled::Refinement,
+            Certificate::CertifiedZero => Settled::CertifiedZero,
+            Certificate::Uncertified(precision) => Settled::Uncertified { precision },
+        };
+        audit::record(settled, || self.enclosure());
+        sign
+    }
+
+    fn filter(&self) -> Interval {
+        self.0.filter
+    }
+}
+
+/// Whether `|x| <= 2^-bits`.
+fn below(x: &Float, bits: u32) -> bool {
+    x.is_zero()
+        || x.get_exp()
+            .is_some_and(|e| i64::from(e) <= -i64::from(bits))
+}
+
+impl fmt::Debug for Real {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Real(~{})", self.to_f64())
+    }
+}
+
+macro_rules! real_ops {
+    ($($tr:ident $f:ident $node:ident),*) => {$(
+        impl $tr for Real {
+            type Output = Real;
+            #[inline]
+            fn $f(self, o: Real) -> Real {
+                Real(Node::$node(self.0, o.0))
+            }
+        }
+        impl<'a> $tr<&'a Real> for Real {
+            type Output = Real;
+            #[inline]
+            fn $f(self, o: &'a Real) -> Real {
+                Real(Node::$node(self.0, o.0.clone()))
+            }
+        }
+    )*};
+}
+real_ops!(Add add add, Sub sub sub, Mul mul mul, Div div div);
+
+impl Neg for Real {
+    type Output = Real;
+    fn neg(self) -> Real {
+        Real(Node::neg(self.0))
+    }
+}
+
+impl Field for Real {
+    fn from_f64(x: f64) -> Self {
+        Real::from_rational(Rational::from_f64(x).unwrap_or_default())
+    }
+
+    /// The nearest `f64` (from a 128-bit enclosure unless the filter is already a point).
+    fn to_f64(&self) -> f64 {
+        let f = self.filter();
+        if f.lo == f.hi {
+            return f.lo;
+        }
+        let (lo, hi) = refine::enclosure(&self.0, FIRST_PRECISION);
+        (Float::with_val(FIRST_PRECISION, &lo + &hi) / 2u32).to_f64()
+    }
+
+    fn sqrt(&self) -> Self {
+        Real(Node::sqrt(self.0.clone()))
+    }
+}
+
+impl CertifiedSign for Real {
+    fn certified_sign(&self) -> Option<Sign> {
+        Some(self.decide())
+    }
+}
+
+impl Scalar for Real {
+    fn sign(&self) -> Sign {
+        self.decide()
+    }
+
+    fn compare(&self, other: &Self) -> Ordering {
+        let (a, b) = (self.filter(), other.filter());
+        if a.hi < b.lo {
+            audit::record(Settled::Filter, || [0.0; 2]);
+            return Ordering::Less;
+        }
+        if a.lo > b.hi {
+            audit::record(Settled::Filter, || [0.0; 2]);
+            return Ordering::Greater;
+        }
+        (self.clone() - other).decide().as_ordering()
+    }
+
+    fn compare_distance(&self, other: &Self) -> Ordering {
+        self.compare(other)
+    }
+
+    fn has_extent(lo: &Self, hi: &Self, _scale: &Self) -> bool {
+        hi.compare(lo) == Ordering::Greater
+    }
+
+    fn within(x: &Self, lo: &Self, hi: &Self, _scale: &Self) -> bool {
+        x.compare(lo) != Ordering::Less && x.compare(hi) != Ordering::Greater
+    }
+
+    fn same_distance_function(
+        a: &SourceDistance<Self>,
+        b: &SourceDistance<Self>,
+        _scale: &Self,
+    ) -> bool {
+        roots::same_distance_function(a, b) == Some(true)
+    }
+
+    fn bisector_roots(
+        a: &SourceDistance<Self>,
+        b: &SourceDistance<Self>,
+        lo: &Self,
+        hi: &Self,
+    ) -> BisectorRoots<Self> {
+        roots::bisector_roots(a, b, lo, hi).expect("the exact backend decides every sign")
+    }
+
+    fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign {
+        let cross = (q[0].clone() - p[0]) * &(r[1].clone() - p[1])
+            - (q[1].clone() - p[1]) * &(r[0].clone() - p[0]);
+        cross.decide()
+    }
+
+    fn locate(site: Site) {
+        audit::locate(site);
+    }
+
+    fn take_counts() -> DecisionCounts {
+        audit::take()
+    }
+}

@@ -1,0 +1,256 @@
+//! The expression DAG of exact reals: rational leaves, `+ - * /`, negation and square roots.
+//!
+//! Each node carries, computed once when it is built:
+//! - an `f64` [`Interval`] enclosing its value (the filter);
+//! - the BFMSS quantities `log2 u(E)` and `log2 l(E)` of its separation bound [BFMSS01];
+//! - whether a square root occurs below it (if not, it can be evaluated as a rational).
+//!
+//! Operations on two rational leaves fold into a rational leaf (while it stays small), and the
+//! square root of a perfect-square rational is rational, so meshes with rational lengths build
+//! no DAG at all.
+
+use super::super::Interval;
+use super::normal_form::NormalForm;
+use rug::{Integer, Rational};
+use std::sync::{Arc, Mutex, OnceLock};
+
+/// Rational leaves larger than this (numerator plus denominator bits) are not folded further:
+/// the DAG and its interval evaluation are cheaper than ever-growing rationals.
+const FOLD_BITS: u32 = 2048;
+
+/// An operation of the DAG.
+pub(crate) enum Op {
+    Leaf(Rational),
+    Add(Arc<Node>, Arc<Node>),
+    Sub(Arc<Node>, Arc<Node>),
+    Mul(Arc<Node>, Arc<Node>),
+    Div(Arc<Node>, Arc<Node>),
+    Neg(Arc<Node>),
+    Sqrt(Arc<Node>),
+    /// A node whose children were moved out while it was dropped.
+    Dropped,
+}
+
+/// An enclosure of a node's value at some precision, cached for refinement.
+pub(crate) struct Enclosure {
+    pub(crate) precision: u32,
+    pub(crate) lo: rug::Float,
+    pub(crate) hi: rug::Float,
+}
+
+/// A node of the DAG.
+pub(crate) struct Node {
+    pub(crate) op: Op,
+    pub(crate) filter: Interval,
+    /// `log2 u(E)`, an upper bound (`-inf` for the value zero).
+    pub(crate) log_u: f64,
+    /// `log2 l(E)`, an upper bound.
+    pub(crate) log_l: f64,
+    pub(crate) has_sqrt: bool,
+    pub(crate) cache: Mutex<Option<Enclosure>>,
+    pub(crate) normal_form: OnceLock<Option<NormalForm>>,
+}
+
+/// `log2(2^a + 2^b)`, rounded up to the next whole bit.
+fn log_add(a: f64, b: f64) -> f64 {
+    if a == f64::NEG_INFINITY {
+        b
+    } else if b == f64::NEG_INFINITY {
+        a
+    } else {
+        a.max(b) + 1.0
+    }
+}
+
+fn log2_bound(i: &Integer) -> f64 {
+    if *i == 0 {
+        f64::NEG_INFINITY
+    } else {
+        f64::from(i.significant_bits())
+    }
+}
+
+/// The `f64` interval enclosing a rational.
+fn enclose(r: &Rational) -> Interval {
+    let x = r.to_f64();
+    if !x.is_finite() {
+        return Interval::ENTIRE;
+    }
+    match Rational::from_f64(x) {
+        Some(exact) if exact == *r => Interval::point(x),
+        _ => Interval {
+            lo: x.next_down(),
+            hi: x.next_up(),
+        },
+    }
+}
+
+impl Node {
+    pub(crate) fn leaf(r: Rational) -> Arc<Node> {
+        Arc::new(Node {
+            filter: enclose(&r),
+            log_u: log2_bound(r.numer()),
+            log_l: log2_bound(r.denom()),
+            has_sqrt: false,
+            op: Op::Leaf(r),
+            cache: Mutex::new(None),
+            normal_form: OnceLock::new(),
+        })
+    }
+
+    pub(crate) fn rational(&self) -> Option<&Rational> {
+        match &self.op {
+            Op::Leaf(r) => Some(r),
+            _ => None,
+        }
+    }
+
+    fn build(op: Op, filter: Interval, log_u: f64, log_l: f64, has_sqrt: bool) -> Arc<Node> {
+        Arc::new(Node {
+            op,
+            filter,
+            log_u,
+            log_l,
+            has_sqrt,
+            cache: Mutex::new(None),
+            normal_form: OnceLock::new(),
+        })
+    }
+
+    /// Folds a binary operation of two small rational leaves.
+    fn fold(
+        a: &Arc<Node>,
+        b: &Arc<Node>,
+        f: impl FnOnce(&Rational, &Rational) -> Option<Rational>,
+    ) -> Option<Arc<Node>> {
+        let (x, y) = (a.rational()?, b.rational()?);
+        let size = |r: &Rational| r.numer().significant_bits() + r.denom().significant_bits();
+        if size(x) + size(y) > FOLD_BITS {
+            return None;
+        }
+        f(x, y).map(Node::leaf)
+    }
+
+    fn is_zero(&self) -> bool {
+        self.rational().is_some_and(|r| r.is_zero())
+    }
+
+    pub(crate) fn add(a: Arc<Node>, b: Arc<Node>) -> Arc<Node> {
+        if let Some(n) = Node::fold(&a, &b, |x, y| Some(Rational::from(x + y))) {
+            return n;
+        }
+        if b.is_zero() {
+            return a;
+        }
+        if a.is_zero() {
+            return b;
+        }
+        let (log_u, log_l) = (
+            log_add(a.log_u + b.log_l, a.log_l + b.log_u),
+            a.log_l + b.log_l,
+        );
+        let (filter, has_sqrt) = (a.filter + b.filter, a.has_sqrt || b.has_sqrt);
+        Node::build(Op::Add(a, b), filter, log_u, log_l, has_sqrt)
+    }
+
+    pub(crate) fn sub(a: Arc<Node>, b: Arc<Node>) -> Arc<Node> {
+        if let Some(n) = Node::fold(&a, &b, |x, y| Some(Rational::from(x - y))) {
+            return n;
+        }
+        if Arc::ptr_eq(&a, &b) {
+            return Node::leaf(Rational::new());
+        }
+        if b.is_zero() {
+            return a;
+        }
+        let (log_u, log_l) = (
+            log_add(a.log_u + b.log_l, a.log_l + b.log_u),
+            a.log_l + b.log_l,
+        );
+        let (filter, has_sqrt) = (a.filter - b.filter, a.has_sqrt || b.has_sqrt);
+        Node::build(Op::Sub(a, b), filter, log_u, log_l, has_sqrt)
+    }
+
+    pub(crate) fn mul(a: Arc<Node>, b: Arc<Node>) -> Arc<Node> {
+        if let Some(n) = Node::fold(&a, &b, |x, y| Some(Rational::from(x * y))) {
+            return n;
+        }
+        if a.is_zero() {
+            return a;
+        }
+        if b.is_zero() {
+            return b;
+        }
+        let (log_u, log_l) = (a.log_u + b.log_u, a.log_l + b.log_l);
+        let (filter, has_sqrt) = (a.filter * b.filter, a.has_sqrt || b.has_sqrt);
+        Node::build(Op::Mul(a, b), filter, log_u, log_l, has_sqrt)
+    }
+
+    pub(crate) fn div(a: Arc<Node>, b: Arc<Node>) -> Arc<Node> {
+        let quotient = |x: &Rational, y: &Rational| (!y.is_zero()).then(|| Rational::from(x / y));
+        if let Some(n) = Node::fold(&a, &b, quotient) {
+            return n;
+        }
+        let (log_u, log_l) = (a.log_u + b.log_l, a.log_l + b.log_u);
+        let (filter, has_sqrt) = (a.filter / b.filter, a.has_sqrt || b.has_sqrt);
+        Node::build(Op::Div(a, b), filter, log_u, log_l, has_sqrt)
+    }
+
+    pub(crate) fn neg(a: Arc<Node>) -> Arc<Node> {
+        if let Some(r) = a.rational() {
+            return Node::leaf(Rational::from(-r));
+        }
+        let (log_u, log_l, filter, has_sqrt) = (a.log_u, a.log_l, -a.filter, a.has_sqrt);
+        Node::build(Op::Neg(a), filter, log_u, log_l, has_sqrt)
+    }
+
+    /// The square root of `max(a, 0)`: a negative rational gives zero, a perfect square its
+    /// rational root.
+    pub(crate) fn sqrt(a: Arc<Node>) -> Arc<Node> {
+        if let Some(r) = a.rational() {
+            if r.cmp0().is_le() {
+                return Node::leaf(Rational::new());
+            }
+            if r.numer().is_perfect_square() && r.denom().is_perfect_square() {
+                let (n, d) = (r.numer().clone().sqrt(), r.denom().clone().sqrt());
+                return Node::leaf(Rational::from((n, d)));
+            }
+        }
+        let (log_u, log_l) = (0.5 * a.log_u, 0.5 * a.log_l);
+        let filter = super::super::Field::sqrt(&a.filter);
+        Node::build(Op::Sqrt(a), filter, log_u, log_l, true)
+    }
+
+    /// The children of this node.
+    pub(crate) fn children(&self) -> impl Iterator<Item = &Arc<Node>> {
+        let (a, b) = match &self.op {
+            Op::Add(a, b) | Op::Sub(a, b) | Op::Mul(a, b) | Op::Div(a, b) => (Some(a), Some(b)),
+            Op::Neg(a) | Op::Sqrt(a) => (Some(a), None),
+            Op::Leaf(_) | Op::Dropped => (None, None),
+        };
+        a.into_iter().chain(b)
+    }
+}
+
+impl Drop for Node {
+    /// Drops long chains without recursing once per level (a DAG built along hundreds of faces
+    /// would otherwise overflow a thread's stack).
+    fn drop(&mut self) {
+        let mut stack: Vec<Arc<Node>> = Vec::new();
+        let take =
+            |op: &mut Op, stack: &mut Vec<Arc<Node>>| match std::mem::replace(op, Op::Dropped) {
+                Op::Add(a, b) | Op::Sub(a, b) | Op::Mul(a, b) | Op::Div(a, b) => {
+                    stack.push(a);
+                    stack.push(b);
+                }
+                Op::Neg(a) | Op::Sqrt(a) => stack.push(a),
+                Op::Leaf(_) | Op::Dropped => {}
+            };
+        take(&mut self.op, &mut stack);
+        while let Some(node) = stack.pop() {
+            if let Ok(mut node) = Arc::try_unwrap(node) {
+                take(&mut node.op, &mut stack);
+            }
+        }
+    }
+}

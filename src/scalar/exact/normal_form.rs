@@ -1,0 +1,274 @@
+//! A cheap exact zero test: values in a tower of quadratic extensions of the rationals,
+//! `Q(sqrt r1, ..., sqrt rk)`, in normal form.
+//!
+//! An element is a sum of rational multiples of square-free products of *symbols*; each symbol
+//! `s` stands for the square root of a value already in the tower (its *square*), and `s * s`
+//! is rewritten into that square. A symbol with a rational square is a radical of an integer
+//! with its small square factors taken out, so equal radicals are one symbol; any other radical
+//! is keyed by the normal form of its radicand. Edge lengths and unfolded positions of a mesh
+//! with rational coordinates are in such a field, so the identities between them (Example 1's
+//! symmetric wedges, [LZT §3]) reduce to a normal form of zero.
+//!
+//! The normal form is unique only when the symbols are independent, which is not checked: a
+//! zero normal form proves the value zero; a non-zero one proves nothing, and the refinement
+//! with the separation bound takes over. Normal forms that grow past [`MAX_TERMS`] give up.
+
+use super::node::{Node, Op};
+use rug::{Integer, Rational};
+use std::collections::{BTreeMap, HashMap};
+use std::sync::{Arc, Mutex, OnceLock};
+
+/// Normal forms with more terms than this are abandoned.
+const MAX_TERMS: usize = 256;
+
+/// Products needing more term-by-term multiplications than this are abandoned.
+const MAX_PRODUCT_WORK: usize = 2048;
+
+/// A product of distinct symbols, in increasing order.
+type Monomial = Vec<u32>;
+
+/// An element of the tower in normal form.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
+pub(crate) struct NormalForm(BTreeMap<Monomial, Rational>);
+
+struct Tower {
+    squares: Vec<NormalForm>,
+    integer_radicals: HashMap<Integer, u32>,
+    radicals: HashMap<NormalForm, u32>,
+}
+
+fn tower() -> &'static Mutex<Tower> {
+    static TOWER: OnceLock<Mutex<Tower>> = OnceLock::new();
+    TOWER.get_or_init(|| {
+        Mutex::new(Tower {
+            squares: Vec::new(),
+            integer_radicals: HashMap::new(),
+            radicals: HashMap::new(),
+        })
+    })
+}
+
+fn square_of(symbol: u32) -> NormalForm {
+    tower().lock().expect("tower lock").squares[symbol as usize].clone()
+}
+
+impl NormalForm {
+    fn rational(r: Rational) -> NormalForm {
+        let mut m = BTreeMap::new();
+        if !r.is_zero() {
+            m.insert(Vec::new(), r);
+        }
+        NormalForm(m)
+    }
+
+    fn monomial(c: Rational, m: Monomial) -> NormalForm {
+        let mut map = BTreeMap::new();
+        if !c.is_zero() {
+            map.insert(m, c);
+        }
+        NormalForm(map)
+    }
+
+    pub(crate) fn is_zero(&self) -> bool {
+        self.0.is_empty()
+    }
+
+    /// The value, if it is rational.
+    pub(crate) fn as_rational(&self) -> Option<Rational> {
+        match self.0.len() {
+            0 => Some(Rational::new()),
+            1 => self.0.get(&Vec::new()).cloned(),
+            _ => None,
+        }
+    }
+
+    fn checked(self) -> Option<NormalForm> {
+        (self.0.len() <= MAX_TERMS).then_some(self)
+    }
+
+    fn add(&self, other: &NormalForm, sign: i32) -> Option<NormalForm> {
+        let mut sum = self.clone();
+        sum.accumulate(other, sign);
+        sum.checked()
+    }
+
+    /// `self += sign * other`, in place.
+    fn accumulate(&mut self, other: &NormalForm, sign: i32) {
+        for (m, c) in &other.0 {
+            let entry = self.0.entry(m.clone()).or_default();
+            if sign > 0 {
+                *entry += c;
+            } else {
+                *entry -= c;
+            }
+            if entry.is_zero() {
+                self.0.remove(m);
+            }
+        }
+    }
+
+    fn neg(&self) -> NormalForm {
+        NormalForm(
+            self.0
+                .iter()
+                .map(|(m, c)| (m.clone(), Rational::from(-c)))
+                .collect(),
+        )
+    }
+
+    fn mul(&self, other: &NormalForm) -> Option<NormalForm> {
+        if self.0.len() * other.0.len() > MAX_PRODUCT_WORK {
+            return None;
+        }
+        let mut sum = NormalForm::default();
+        for (m1, c1) in &self.0 {
+            for (m2, c2) in &other.0 {
+                let (mut product, mut common) = (Vec::new(), Vec::new());
+                let (mut i, mut j) = (0, 0);
+                while i < m1.len() || j < m2.len() {
+                    match (m1.get(i), m2.get(j)) {
+                        (Some(a), Some(b)) if a == b => {
+                            common.push(*a);
+                            i += 1;
+                            j += 1;
+                        }
+                        (Some(a), Some(b)) if a < b => {
+                            product.push(*a);
+                            i += 1;
+                        }
+                        (Some(a), None) => {
+                            product.push(*a);
+                            i += 1;
+                        }
+                        (_, Some(b)) => {
+                            product.push(*b);
+                            j += 1;
+                        }
+                        (None, None) => unreachable!("loop condition"),
+                    }
+                }
+                let mut term = NormalForm::monomial(Rational::from(c1 * c2), product);
+                for s in common {
+                    term = term.mul(&square_of(s))?;
+                }
+                sum.accumulate(&term, 1);
+                if sum.0.len() > MAX_TERMS {
+                    return None;
+                }
+            }
+        }
+        Some(sum)
+    }
+
+    fn div(&self, other: &NormalForm) -> Option<NormalForm> {
+        let (mut num, mut den) = (self.clone(), other.clone());
+        // Multiply by conjugates until the denominator is rational: with `den = p + q s` for
+        // its largest symbol `s`, `(p + q s)(p - q s) = p^2 - q^2 square(s)` is free of `s`.
+        while den.as_rational().is_none() {
+            let s = *den.0.keys().filter_map(|m| m.last()).max()?;
+            let conjugate = NormalForm(
+                den.0
+                    .iter()
+                    .map(|(m, c)| {
+                        let c = if m.contains(&s) {
+                            Rational::from(-c)
+                        } else {
+                            c.clone()
+                        };
+                        (m.clone(), c)
+                    })
+                    .collect(),
+            );
+            num = num.mul(&conjugate)?;
+            den = den.mul(&conjugate)?;
+        }
+        let d = den.as_rational()?;
+        if d.is_zero() {
+            return None;
+        }
+        Some(NormalForm(
+            num.0.into_iter().map(|(m, c)| (m, c / &d)).collect(),
+        ))
+    }
+
+    /// The square root of a value known to be positive.
+    fn sqrt(&self) -> Option<NormalForm> {
+        if let Some(r) = self.as_rational() {
+            return Some(sqrt_of_rational(&r));
+        }
+        let mut t = tower().lock().expect("tower lock");
+        let id = match t.radicals.get(self) {
+            Some(&id) => id,
+            None => {
+                let id = t.squares.len() as u32;
+                t.squares.push(self.clone());
+                t.radicals.insert(self.clone(), id);
+                id
+            }
+        };
+        Some(NormalForm::monomial(Rational::from(1), vec![id]))
+    }
+}
+
+/// `sqrt(p / q) = (f / q) sqrt(m)` with `p q = f^2 m` and the small square factors of `m`
+/// taken out, so that radicals equal up to a rational factor share one symbol.
+fn sqrt_of_rational(r: &Rational) -> NormalForm {
+    if r.cmp0().is_le() {
+        return NormalForm::default();
+    }
+    let mut m = Integer::from(r.numer() * r.denom());
+    let mut f = Integer::from(1);
+    for p in [2u32, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47] {
+        let p2 = Integer::from(p * p);
+        while m.is_divisible(&p2) {
+            m /= &p2;
+            f *= p;
+        }
+    }
+    if m.is_perfect_square() {
+        f *= m.sqrt();
+        return NormalForm::rational(Rational::from((f, r.denom().clone())));
+    }
+    let mut t = tower().lock().expect("tower lock");
+    let id = match t.integer_radicals.get(&m) {
+        Some(&id) => id,
+        None => {
+            let id = t.squares.len() as u32;
+            t.squares
+                .push(NormalForm::rational(Rational::from(m.clone())));
+            t.integer_radicals.insert(m, id);
+            id
+        }
+    };
+    NormalForm::monomial(Rational::from((f, r.denom().clone())), vec![id])
+}
+
+/// The normal form of a node's value, memoized on the node; `None` if it grew too large or
+/// a square root's radicand could not be shown positive.
+pub(crate) fn normal_form(node: &Arc<Node>) -> Option<NormalForm> {
+    node.normal_form.get_or_init(|| compute(node)).clone()
+}
+
+fn compute(node: &Arc<Node>) -> Option<NormalForm> {
+    match &node.op {
+        Op::Leaf(r) => Some(NormalForm::rational(r.clone())),
+        Op::Add(a, b) => normal_form(a)?.add(&normal_form(b)?, 1),
+        Op::Sub(a, b) => normal_form(a)?.add(&normal_form(b)?, -1),
+        Op::Mul(a, b) => normal_form(a)?.mul(&normal_form(b)?),
+        Op::Div(a, b) => normal_form(a)?.div(&normal_form(b)?),
+        Op::Neg(a) => Some(normal_form(a)?.neg()),
+        Op::Sqrt(a) => {
+            let radicand = normal_form(a)?;
+            // The node is sqrt(max(a, 0)): the symbol stands for it only if a > 0 (or a = 0).
+            if radicand.is_zero() {
+                return Some(NormalForm::default());
+            }
+            if a.filter.lo > 0.0 || super::Real(a.clone()).positive_without_zero_test() {
+                radicand.sqrt()
+            } else {
+                None
+            }
+        }
+        Op::Dropped => None,
+    }
+}
