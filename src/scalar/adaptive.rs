@@ -5,7 +5,7 @@
 //! - Comparisons and signs of stored values are exact as they stand (no tolerance).
 //! - Orientation is Shewchuk's adaptive `orient2d` (the `robust` crate).
 //! - Eq. (2) and the validity of its roots (Property 1) are decided on the `f64` inputs by an
-//!   [`Interval`] filter; only when it cannot tell, by the exact stage: the same
+//!   `f64` filter with a running error bound; only when it cannot tell, by the exact stage: the same
 //!   decisions on exact [`Real`]s built from the inputs (exact rationals, with the square root
 //!   of the discriminant certified by refinement).
 //!
@@ -14,7 +14,8 @@
 
 use super::audit::{self, DecisionCounts, Settled, Site};
 use super::roots::{self, CertifiedSign};
-use super::{BisectorRoots, Field, Interval, Real, Scalar, Sign, SourceDistance};
+use super::error_bound::ErrorBound;
+use super::{BisectorRoots, Field, Real, Scalar, Sign, SourceDistance};
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -131,13 +132,22 @@ impl Scalar for Adaptive {
         x.0 >= lo.0 && x.0 <= hi.0
     }
 
+    /// `A = B = C = 0` holds exactly when the two functions have equal `x`, `|y|` and `sigma`,
+    /// or when both pseudo-sources lie on the edge's line with `x2 - x1 = +-(sigma2 - sigma1)`;
+    /// for `f64` inputs the first is a comparison of bits, the second is left to the filter.
     fn same_distance_function(
         a: &SourceDistance<Self>,
         b: &SourceDistance<Self>,
         _scale: &Self,
     ) -> bool {
+        if a.x == b.x && a.sigma == b.sigma && a.y.0.abs() == b.y.0.abs() {
+            return true;
+        }
+        if a.y.0 != 0.0 || b.y.0 != 0.0 {
+            return false;
+        }
         filtered(
-            || roots::same_distance_function::<Interval>(&lift(a), &lift(b)),
+            || roots::same_distance_function::<ErrorBound>(&lift(a), &lift(b)),
             || roots::same_distance_function::<Exact>(&lift(a), &lift(b)),
         )
     }
@@ -150,8 +160,8 @@ impl Scalar for Adaptive {
     ) -> BisectorRoots<Self> {
         let roots = filtered(
             || {
-                let (lo, hi) = (Interval::point(lo.0), Interval::point(hi.0));
-                roots::bisector_roots::<Interval>(&lift(a), &lift(b), &lo, &hi)
+                let (lo, hi) = (ErrorBound::from_f64(lo.0), ErrorBound::from_f64(hi.0));
+                roots::bisector_roots::<ErrorBound>(&lift(a), &lift(b), &lo, &hi)
                     .map(|r| r.map(|t| t.to_f64()))
             },
             || {

@@ -15,6 +15,7 @@
 mod adaptive;
 mod audit;
 mod bisector;
+mod error_bound;
 pub mod exact;
 pub mod float;
 mod interval;

@@ -38,12 +38,10 @@ pub(crate) fn bisector_roots<T: CertifiedSign>(
     hi: &T,
 ) -> Option<BisectorRoots<T>> {
     let eq2 = Eq2Coefficients::new(a, b, lo);
-    let (sa, sb, sc) = (
-        eq2.a.certified_sign()?,
-        eq2.b.certified_sign()?,
-        eq2.c.certified_sign()?,
-    );
-    if (sa, sb, sc) == (Sign::Zero, Sign::Zero, Sign::Zero) {
+    let (sa, sb) = (eq2.a.certified_sign()?, eq2.b.certified_sign()?);
+    // C is often nearly zero (the range starts where the wedges are nearly equal), so its sign
+    // is asked only when A = B = 0 makes it decide the case.
+    if (sa, sb) == (Sign::Zero, Sign::Zero) && eq2.c.certified_sign()? == Sign::Zero {
         return Some(BisectorRoots::Infinite);
     }
     let (x1, x2) = (a.x.clone() - lo, b.x.clone() - lo);

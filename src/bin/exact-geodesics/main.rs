@@ -3,6 +3,7 @@
 //! The only part of the crate that prints. Errors go to stderr with exit code 1 (2 for usage).
 
 mod benchmark_model;
+mod compare;
 mod distance;
 mod load;
 mod path;
@@ -41,6 +42,9 @@ enum Command {
     /// The final wedges on an edge, on a face's edges, or on every edge, as 7-tuples
     /// (b0, b1, d0, d1, tau, s, sigma) [LZT Example 4].
     Wedges(wedges::WedgesArgs),
+    /// Runs f64, adaptive and exact on the same input and reports where they differ: vertex
+    /// distances, wedge counts, eq.-(2) cases, and each wedge meeting decided differently.
+    Compare(compare::CompareArgs),
     /// Counters and timings of one propagation, as JSON.
     Stats(stats::StatsArgs),
     /// A benchmark model [LZT §5]: obstacles lifted as cylinders over a triangulated rectangle,
@@ -193,6 +197,7 @@ fn main() -> ExitCode {
         Command::Path(args) => path::run(args),
         Command::Wedges(args) => wedges::run(args),
         Command::Stats(args) => stats::run(args),
+        Command::Compare(args) => compare::run(args),
         Command::BenchmarkModel(args) => benchmark_model::run(args),
         Command::Verify(args) => verify::run(args),
         Command::Subdivision(args) => subdivision::run(args),

@@ -1,0 +1,169 @@
+//! `f64` values with a running bound on their absolute error: the adaptive backend's filter.
+//!
+//! Cheaper than [`Interval`](super::Interval) (no fused multiply-adds, one bound instead of
+//! two): each operation adds the propagated error of its operands and one rounding, `2^-52`
+//! times the result, and scales the sum up slightly to cover the rounding of the bound itself.
+//! A sign is certain when the value is farther from zero than its bound; a value computed
+//! without rounding from exact inputs has bound zero, so exact zeros are recognised.
+
+use super::roots::CertifiedSign;
+use super::{Field, Sign};
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// Twice the unit roundoff: covers `|x - fl(x)| <= u |x| <= u |fl(x)| / (1 - u)`.
+const ROUNDING: f64 = f64::EPSILON;
+
+/// Covers the roundings made while computing a bound (a few, each at most `1 + 2^-53`).
+const SLACK: f64 = 1.0 + 4.0 * f64::EPSILON;
+
+/// An `f64` value and a bound on its distance to the exact value it stands for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct ErrorBound {
+    value: f64,
+    error: f64,
+}
+
+impl ErrorBound {
+    #[inline(always)]
+    fn new(value: f64, propagated: f64) -> ErrorBound {
+        let error = (propagated + ROUNDING * value.abs()) * SLACK;
+        if value.is_finite() && !error.is_nan() {
+            ErrorBound { value, error }
+        } else {
+            ErrorBound {
+                value: 0.0,
+                error: f64::INFINITY,
+            }
+        }
+    }
+}
+
+impl Add for ErrorBound {
+    type Output = ErrorBound;
+    #[inline(always)]
+    fn add(self, o: ErrorBound) -> ErrorBound {
+        ErrorBound::new(self.value + o.value, self.error + o.error)
+    }
+}
+
+impl Sub for ErrorBound {
+    type Output = ErrorBound;
+    #[inline(always)]
+    fn sub(self, o: ErrorBound) -> ErrorBound {
+        ErrorBound::new(self.value - o.value, self.error + o.error)
+    }
+}
+
+impl Mul for ErrorBound {
+    type Output = ErrorBound;
+    #[inline(always)]
+    fn mul(self, o: ErrorBound) -> ErrorBound {
+        let propagated =
+            self.value.abs() * o.error + o.value.abs() * self.error + self.error * o.error;
+        ErrorBound::new(self.value * o.value, propagated)
+    }
+}
+
+impl Div for ErrorBound {
+    type Output = ErrorBound;
+    #[inline(always)]
+    fn div(self, o: ErrorBound) -> ErrorBound {
+        let margin = o.value.abs() - o.error;
+        if margin <= 0.0 {
+            return ErrorBound {
+                value: 0.0,
+                error: f64::INFINITY,
+            };
+        }
+        // |a'/b' - a/b| <= (|a| e_b + |b| e_a) / (|b| (|b| - e_b)).
+        let propagated = (self.value.abs() * o.error + o.value.abs() * self.error)
+            / (o.value.abs() * margin * (1.0 - 4.0 * f64::EPSILON));
+        ErrorBound::new(self.value / o.value, propagated)
+    }
+}
+
+impl Neg for ErrorBound {
+    type Output = ErrorBound;
+    #[inline(always)]
+    fn neg(self) -> ErrorBound {
+        ErrorBound {
+            value: -self.value,
+            error: self.error,
+        }
+    }
+}
+
+macro_rules! by_reference {
+    ($($tr:ident $f:ident),*) => {$(
+        impl<'a> $tr<&'a ErrorBound> for ErrorBound {
+            type Output = ErrorBound;
+            #[inline(always)]
+            fn $f(self, o: &'a ErrorBound) -> ErrorBound {
+                $tr::$f(self, *o)
+            }
+        }
+    )*};
+}
+by_reference!(Add add, Sub sub, Mul mul, Div div);
+
+impl Field for ErrorBound {
+    #[inline(always)]
+    fn from_f64(x: f64) -> Self {
+        ErrorBound {
+            value: x,
+            error: 0.0,
+        }
+    }
+
+    #[inline(always)]
+    fn to_f64(&self) -> f64 {
+        self.value
+    }
+
+    /// `sqrt(max(x, 0))`: `|sqrt(x') - sqrt(x)| = |x' - x| / (sqrt(x') + sqrt(x))`.
+    #[inline(always)]
+    fn sqrt(&self) -> Self {
+        let v = self.value.max(0.0).sqrt();
+        let low = self.value - self.error;
+        if low <= 0.0 {
+            let reach = (self.value.max(0.0) + self.error).sqrt() * SLACK;
+            return ErrorBound::new(v, reach);
+        }
+        ErrorBound::new(v, self.error / (low.sqrt() * (1.0 - 4.0 * f64::EPSILON) + v))
+    }
+}
+
+impl CertifiedSign for ErrorBound {
+    #[inline(always)]
+    fn certified_sign(&self) -> Option<Sign> {
+        if self.value > self.error {
+            Some(Sign::Positive)
+        } else if -self.value > self.error {
+            Some(Sign::Negative)
+        } else if self.value == 0.0 && self.error == 0.0 {
+            Some(Sign::Zero)
+        } else {
+            None
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn exact_zeros_are_recognised_and_rounding_is_bounded() {
+        let x = ErrorBound::from_f64(0.1);
+        assert_eq!((x - x).certified_sign(), Some(Sign::Zero));
+        let third = ErrorBound::from_f64(1.0) / ErrorBound::from_f64(3.0);
+        let back = third * ErrorBound::from_f64(3.0) - ErrorBound::from_f64(1.0);
+        assert_eq!(back.certified_sign(), None);
+        let r = ErrorBound::from_f64(2.0).sqrt();
+        assert!((r.value - std::f64::consts::SQRT_2).abs() <= r.error.max(f64::EPSILON));
+        assert_eq!(
+            (r - ErrorBound::from_f64(1.4)).certified_sign(),
+            Some(Sign::Positive)
+        );
+    }
+}
