@@ -258,3 +258,97 @@ fn out_of_range_and_malformed_sources_are_errors() {
         "unknown generated mesh",
     );
 }
+
+#[test]
+fn every_backend_gives_the_same_distances_and_exact_reports_its_decisions() {
+    let csv = |backend: &str| {
+        stdout(&run(&[
+            "distance",
+            "gen:paper-example-4",
+            "--source",
+            "v:2",
+            "--backend",
+            backend,
+        ]))
+    };
+    let parse = |text: String| -> Vec<f64> {
+        text.lines()
+            .skip(1)
+            .map(|l| {
+                l.split(',')
+                    .nth(1)
+                    .expect("distance")
+                    .parse()
+                    .expect("number")
+            })
+            .collect()
+    };
+    let f = parse(csv("f64"));
+    for backend in ["adaptive", "exact"] {
+        for (a, b) in parse(csv(backend)).iter().zip(&f) {
+            assert!((a - b).abs() <= 1e-12 * b.max(1.0), "{backend}: {a} vs {b}");
+        }
+    }
+    let stats = stdout(&run(&[
+        "stats",
+        "gen:paper-example-4",
+        "--source",
+        "v:2",
+        "--backend",
+        "exact",
+    ]));
+    let json: serde_json::Value = serde_json::from_str(&stats).expect("JSON");
+    let decisions = &json["backend_decisions"];
+    assert!(decisions["certified_zeros"].as_u64().expect("count") > 0);
+    assert_eq!(decisions["uncertified"].as_u64(), Some(0));
+    assert_eq!(
+        decisions["decisions"].as_u64().expect("count"),
+        [
+            "by_filter",
+            "by_refinement",
+            "certified_zeros",
+            "uncertified"
+        ]
+        .iter()
+        .map(|k| decisions[*k].as_u64().expect("count"))
+        .sum::<u64>()
+    );
+}
+
+#[test]
+fn compare_reports_example1_symmetric_wedges_case_by_case() {
+    let text = stdout(&run(&["compare", "gen:paper-example-1", "--source", "v:0"]));
+    for needle in [
+        "vertex distances against exact",
+        "edges whose final wedge counts differ",
+        "wedge meetings decided differently from exact",
+    ] {
+        assert!(text.contains(needle), "{needle} in {text}");
+    }
+    let json = stdout(&run(&[
+        "compare",
+        "gen:paper-example-1",
+        "--source",
+        "v:0",
+        "--format",
+        "json",
+    ]));
+    let json: serde_json::Value = serde_json::from_str(&json).expect("JSON");
+    let backends = json["backends"].as_array().expect("backends");
+    assert_eq!(backends.len(), 3);
+    // The exact backend meets infinitely many solutions (Example 1's w1, w3) and certifies them.
+    let exact = &backends[2];
+    assert_eq!(exact["backend"], "exact");
+    assert!(exact["eq2_cases"]["infinite"].as_u64().expect("count") > 0);
+    assert_eq!(exact["decisions"]["uncertified"].as_u64(), Some(0));
+    for d in json["distance_vs_exact"].as_array().expect("differences") {
+        assert!(d["max_relative"].as_f64().expect("number") < 1e-12);
+    }
+    // Every listed difference names the case exact chose and what f64 saw.
+    for d in json["decisions_differ"].as_array().expect("list") {
+        let f = &d["f64"];
+        if !f.is_null() {
+            assert_eq!(f["coefficients"].as_array().expect("A, B, C").len(), 3);
+        }
+    }
+}

@@ -13,8 +13,8 @@
 //! stored values are exact by themselves and not counted.
 
 use super::audit::{self, DecisionCounts, Settled, Site};
-use super::roots::{self, CertifiedSign};
 use super::error_bound::ErrorBound;
+use super::roots::{self, CertifiedSign};
 use super::{BisectorRoots, Field, Real, Scalar, Sign, SourceDistance};
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};

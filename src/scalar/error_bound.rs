@@ -129,7 +129,10 @@ impl Field for ErrorBound {
             let reach = (self.value.max(0.0) + self.error).sqrt() * SLACK;
             return ErrorBound::new(v, reach);
         }
-        ErrorBound::new(v, self.error / (low.sqrt() * (1.0 - 4.0 * f64::EPSILON) + v))
+        ErrorBound::new(
+            v,
+            self.error / (low.sqrt() * (1.0 - 4.0 * f64::EPSILON) + v),
+        )
     }
 }
 

@@ -231,6 +231,10 @@ impl Field for Real {
             return f.lo;
         }
         let (lo, hi) = refine::enclosure(&self.0, FIRST_PRECISION);
+        let straddles = lo.cmp0() != Some(Ordering::Greater) && hi.cmp0() != Some(Ordering::Less);
+        if straddles && normal_form::normal_form(&self.0).is_some_and(|nf| nf.is_zero()) {
+            return 0.0;
+        }
         (Float::with_val(FIRST_PRECISION, &lo + &hi) / 2u32).to_f64()
     }
 
