@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""Benchmark the three backends (f64, adaptive, exact) of the exact-geodesics CLI.
+
+Each (mesh, backend) pair runs ``exact-geodesics stats MESH --source v:0 --backend B`` in a
+fresh process, REPEAT times, and keeps the fastest ``propagation_seconds`` and its decision
+counters. Meshes: the paper's Example 4 and a 1,012-face planar grid with exact symmetries
+(generated, always present), and stanford_bunny and icosphere5 from ../shared/models when that
+folder exists (f64 and adaptive only: exact is not meant for 70k faces).
+
+Writes OUT/backends.json and OUT/backends.csv and prints a table; exit status 1 if a run fails.
+Needs only the standard library; build the CLI first (cargo build --release).
+"""
+
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+BIN = os.path.join(ROOT, "target", "release", "exact-geodesics")
+MODELS = os.path.join(ROOT, "..", "shared", "models")
+
+
+def cases():
+    yield "paper-example-4", "gen:paper-example-4", "v:2", ["f64", "adaptive", "exact"]
+    yield "grid-22x23 (1012 faces)", "gen:grid:22,23", "v:0", ["f64", "adaptive", "exact"]
+    for name in ["stanford_bunny", "icosphere5"]:
+        path = os.path.join(MODELS, name + ".obj")
+        if os.path.exists(path):
+            yield name, path, "v:0", ["f64", "adaptive"]
+        else:
+            print(f"notice: {path} absent, skipped", file=sys.stderr)
+
+
+def run(mesh, source, backend):
+    out = subprocess.run(
+        [BIN, "stats", mesh, "--source", source, "--backend", backend],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    return json.loads(out.stdout)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", default=os.path.join(ROOT, "bench-results"))
+    parser.add_argument("--repeat", type=int, default=3)
+    args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+    rows, failed = [], False
+    for name, mesh, source, backends in cases():
+        base = None
+        for backend in backends:
+            try:
+                runs = [run(mesh, source, backend) for _ in range(args.repeat)]
+            except subprocess.CalledProcessError as e:
+                print(f"{name} {backend}: failed: {e.stderr.strip()}", file=sys.stderr)
+                failed = True
+                continue
+            best = min(runs, key=lambda r: r["propagation_seconds"])
+            seconds = best["propagation_seconds"]
+            if backend == "f64":
+                base = seconds
+            d = best["backend_decisions"]
+            rows.append(
+                {
+                    "mesh": name,
+                    "faces": best["faces"],
+                    "backend": backend,
+                    "propagation_seconds": seconds,
+                    "ratio_to_f64": seconds / base if base else None,
+                    "wedges": best["wedges"],
+                    "decisions": d["decisions"],
+                    "by_filter": d["by_filter"],
+                    "by_exact_stage": d["by_refinement"],
+                    "certified_zeros": d["certified_zeros"],
+                    "uncertified": d["uncertified"],
+                }
+            )
+            r = rows[-1]
+            ratio = f"{r['ratio_to_f64']:.2f}" if r["ratio_to_f64"] else "-"
+            print(
+                f"{name:<26} {backend:<9} {seconds:>9.4f}s  x{ratio:<6} wedges {r['wedges']:>8}"
+                f"  filter {r['by_filter']:>8}  exact {r['by_exact_stage']:>7}"
+                f"  zeros {r['certified_zeros']:>6}  uncertified {r['uncertified']}"
+            )
+    with open(os.path.join(args.out, "backends.json"), "w") as f:
+        json.dump(rows, f, indent=2)
+    with open(os.path.join(args.out, "backends.csv"), "w", newline="") as f:
+        if rows:
+            w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+            w.writeheader()
+            w.writerows(rows)
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
