@@ -369,3 +369,41 @@ fn bad_scenes_and_options_are_typed_errors() {
 fn build_with(s: &Scene, options: &ModelOptions) -> Result<(), BenchmarkError> {
     BenchmarkModel::build(s, options).map(|_| ())
 }
+
+/// The ground truth as an exact real: the sum of the exact lengths of its segments.
+fn exact_length(path: &[Point]) -> exact_geodesics::scalar::Real {
+    use exact_geodesics::scalar::{Field, Real};
+    path.windows(2).fold(Real::from_f64(0.0), |sum, s| {
+        let dx = Real::from_f64(s[1][0]) - Real::from_f64(s[0][0]);
+        let dy = Real::from_f64(s[1][1]) - Real::from_f64(s[0][1]);
+        sum + (dx.clone() * dx + dy.clone() * dy).sqrt()
+    })
+}
+
+#[test]
+fn exact_backend_distance_equals_the_ground_truth_exactly_on_small_scenes() {
+    use exact_geodesics::scalar::{exact::Certificate, Real, Sign};
+    let mut scenes = vec![
+        scene(vec![square()], [0.0, 0.0], [4.0, 3.5]),
+        scene(vec![u_shape()], [1.5, 2.0], [4.0, 4.0]),
+    ];
+    scenes.extend((0..2).map(|seed| Scene::random(seed, 2)));
+    for scene in &scenes {
+        let model = BenchmarkModel::build(scene, &ModelOptions::default()).expect("a valid scene");
+        let field = propagate::<Real>(
+            &model.mesh,
+            &[SurfacePoint::Vertex(model.p)],
+            &PropagateOptions::default(),
+        )
+        .expect("p is a vertex");
+        let engine = field.vertex_distance_exact(model.q).expect("q is reached");
+        let truth = exact_length(&model.ground_truth.points);
+        let (sign, how) = (engine.clone() - &truth).certified_sign();
+        assert_eq!(
+            (sign, how),
+            (Sign::Zero, Certificate::CertifiedZero),
+            "{:?}: engine {engine:?}, ground truth {truth:?}",
+            scene.obstacles
+        );
+    }
+}
