@@ -120,6 +120,101 @@ fn split_shared_range<S: Scalar>(
     (case, true)
 }
 
+/// Cuts the union of the new wedge's range and the ranges of the wedges it overlaps (sorted,
+/// disjoint, each with an id) into pieces, each owned by the better wedge there.
+fn cut_into_pieces<'a, S: Scalar>(
+    counts: &mut Eq2Counts,
+    mut log: Option<&mut Vec<Eq2Decision>>,
+    pieces: &mut Vec<Piece<S>>,
+    overlapping: impl Iterator<Item = (u32, &'a Wedge<S>)>,
+    w: &Wedge<S>,
+) {
+    let mine = w.distance_function();
+    let mut cursor = w.b0.clone();
+    for (id, old) in overlapping {
+        if cursor.compare(&old.b0) == Ordering::Less {
+            push_piece(pieces, cursor.clone(), old.b0.clone(), Owner::New);
+        }
+        if old.b0.compare(&w.b0) == Ordering::Less {
+            push_piece(pieces, old.b0.clone(), w.b0.clone(), Owner::Old(id));
+        }
+        let lo = S::max_of(&old.b0, &w.b0);
+        let hi = S::min_of(&old.b1, &w.b1);
+        let theirs = old.distance_function();
+        let record = log.is_some().then(|| {
+            let eq2 = Eq2Coefficients::new(&theirs, &mine, &lo);
+            let range = [lo.to_f64(), hi.to_f64()];
+            (range, [eq2.a, eq2.b, eq2.c].map(|c| c.to_f64()))
+        });
+        let (case, solved) = split_shared_range(counts, pieces, &theirs, &mine, lo, hi.clone(), id);
+        if let (Some(log), Some((range, coefficients))) = (log.as_deref_mut(), record) {
+            log.push(Eq2Decision {
+                edge: w.edge.0,
+                existing: old.pseudo_source,
+                arriving: w.pseudo_source,
+                range,
+                case,
+                solved,
+                coefficients,
+            });
+        }
+        if old.b1.compare(&w.b1) == Ordering::Greater {
+            push_piece(pieces, w.b1.clone(), old.b1.clone(), Owner::Old(id));
+        }
+        cursor = hi;
+    }
+    if cursor.compare(&w.b1) == Ordering::Less {
+        push_piece(pieces, cursor, w.b1.clone(), Owner::New);
+    }
+}
+
+/// The wedges of an edge after a new wedge meets them [LZT §4], outside a propagation: the
+/// Section 4 cases on hand-made wedges. `existing` are the edge's wedges, sorted and disjoint;
+/// the result is sorted and disjoint too, with the eq.-(2) cases met.
+pub fn intersect<S: Scalar>(
+    edge_length: &S,
+    existing: &[Wedge<S>],
+    arriving: &Wedge<S>,
+) -> (Vec<Wedge<S>>, Eq2Counts) {
+    let mut counts = Eq2Counts::default();
+    if !S::has_extent(&arriving.b0, &arriving.b1, edge_length) {
+        return (existing.to_vec(), counts);
+    }
+    let overlaps = |old: &Wedge<S>| {
+        old.b1.compare(&arriving.b0) == Ordering::Greater
+            && old.b0.compare(&arriving.b1) == Ordering::Less
+    };
+    let mut pieces = Vec::new();
+    let overlapping = existing
+        .iter()
+        .enumerate()
+        .filter(|(_, old)| overlaps(old))
+        .map(|(i, old)| (i as u32, old));
+    cut_into_pieces(&mut counts, None, &mut pieces, overlapping, arriving);
+    let first = existing.iter().position(overlaps).unwrap_or(existing.len());
+    let mut result: Vec<Wedge<S>> = existing[..first].to_vec();
+    for piece in pieces {
+        if !S::has_extent(&piece.lo, &piece.hi, edge_length) {
+            continue;
+        }
+        let mut wedge = match piece.owner {
+            Owner::New => arriving.clone(),
+            Owner::Old(i) => existing[i as usize].clone(),
+        };
+        wedge.b0 = piece.lo;
+        wedge.b1 = piece.hi;
+        result.push(wedge);
+    }
+    result.extend(
+        existing
+            .iter()
+            .skip(first)
+            .filter(|w| !overlaps(w))
+            .cloned(),
+    );
+    (result, counts)
+}
+
 impl<S: Scalar> Engine<'_, S> {
     /// Inserts a wedge on its edge, intersecting it with the wedges there.
     pub(crate) fn insert(&mut self, w: Wedge<S>) {
@@ -143,58 +238,13 @@ impl<S: Scalar> Engine<'_, S> {
                     self.slots[id as usize].wedge.b0.compare(&w.b1) == Ordering::Less
                 })
                 .count();
-        let mine = w.distance_function();
         let mut pieces = std::mem::take(&mut self.scratch.pieces);
         pieces.clear();
-        let mut cursor = w.b0.clone();
-        for &id in &list[first..end] {
-            let old = &self.slots[id as usize].wedge;
-            if cursor.compare(&old.b0) == Ordering::Less {
-                push_piece(&mut pieces, cursor.clone(), old.b0.clone(), Owner::New);
-            }
-            if old.b0.compare(&w.b0) == Ordering::Less {
-                push_piece(&mut pieces, old.b0.clone(), w.b0.clone(), Owner::Old(id));
-            }
-            let lo = S::max_of(&old.b0, &w.b0);
-            let hi = S::min_of(&old.b1, &w.b1);
-            let theirs = old.distance_function();
-            let record = self.record_decisions.then(|| {
-                let eq2 = Eq2Coefficients::new(&theirs, &mine, &lo);
-                let range = [lo.to_f64(), hi.to_f64()];
-                (
-                    old.pseudo_source,
-                    range,
-                    [eq2.a, eq2.b, eq2.c].map(|c| c.to_f64()),
-                )
-            });
-            let (case, solved) = split_shared_range(
-                &mut self.stats.eq2,
-                &mut pieces,
-                &theirs,
-                &mine,
-                lo,
-                hi.clone(),
-                id,
-            );
-            if let Some((existing, range, coefficients)) = record {
-                self.stats.decisions.push(Eq2Decision {
-                    edge: e.0,
-                    existing,
-                    arriving: w.pseudo_source,
-                    range,
-                    case,
-                    solved,
-                    coefficients,
-                });
-            }
-            if old.b1.compare(&w.b1) == Ordering::Greater {
-                push_piece(&mut pieces, w.b1.clone(), old.b1.clone(), Owner::Old(id));
-            }
-            cursor = hi;
-        }
-        if cursor.compare(&w.b1) == Ordering::Less {
-            push_piece(&mut pieces, cursor, w.b1.clone(), Owner::New);
-        }
+        let log = self.record_decisions.then_some(&mut self.stats.decisions);
+        let overlapping = self.lists[e.index()][first..end]
+            .iter()
+            .map(|&id| (id, &self.slots[id as usize].wedge));
+        cut_into_pieces(&mut self.stats.eq2, log, &mut pieces, overlapping, &w);
         if pieces.iter().any(|p| p.owner == Owner::New) {
             self.rebuild(&w, first, end, &mut pieces, &length);
         }

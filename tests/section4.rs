@@ -1,0 +1,145 @@
+//! Section 4's wedge intersection [LZT §4, Property 1, Fig. 8], each case on a hand-made pair
+//! of wedges on an edge of length 4, in the f64 and the exact backend.
+
+use exact_geodesics::mmp::intersect;
+use exact_geodesics::scalar::{Field, Real, Scalar};
+use exact_geodesics::{EdgeId, PseudoSource, Side, Wedge};
+
+const LENGTH: f64 = 4.0;
+
+/// A wedge on the test edge from a pseudo-source at `(x, y)` with `sigma`, over `[b0, b1]`.
+fn wedge<S: Scalar>(id: usize, (b0, b1): (f64, f64), (x, y, sigma): (f64, f64, f64)) -> Wedge<S> {
+    Wedge {
+        edge: EdgeId(0),
+        b0: S::from_f64(b0),
+        b1: S::from_f64(b1),
+        source_x: S::from_f64(x),
+        source_y: S::from_f64(y.abs()),
+        sigma: S::from_f64(sigma),
+        tau: if y >= 0.0 { Side::First } else { Side::Second },
+        pseudo_source: PseudoSource::Source(id),
+        source: id,
+    }
+}
+
+/// The updated wedges as (owner, b0, b1), owner 0 for the existing wedge and 1 for the new.
+fn meet<S: Scalar>(existing: Wedge<S>, arriving: Wedge<S>) -> (Vec<(usize, f64, f64)>, [u64; 4]) {
+    let (result, counts) = intersect(&S::from_f64(LENGTH), &[existing], &arriving);
+    let pieces = result
+        .iter()
+        .map(|w| (w.source, w.b0.to_f64(), w.b1.to_f64()))
+        .collect();
+    (
+        pieces,
+        [counts.none, counts.one, counts.two, counts.infinite],
+    )
+}
+
+fn assert_pieces(got: &[(usize, f64, f64)], want: &[(usize, f64, f64)]) {
+    assert_eq!(got.len(), want.len(), "{got:?} vs {want:?}");
+    for (g, w) in got.iter().zip(want) {
+        assert_eq!(g.0, w.0, "{got:?}");
+        assert!(
+            (g.1 - w.1).abs() < 1e-12 && (g.2 - w.2).abs() < 1e-12,
+            "{got:?} vs {want:?}"
+        );
+    }
+}
+
+fn zero_solutions<S: Scalar>() {
+    // Same foot, the new pseudo-source farther: it is worse everywhere, the edge is unchanged.
+    let (pieces, counts) = meet::<S>(
+        wedge(0, (0.0, LENGTH), (2.0, 1.0, 0.0)),
+        wedge(1, (0.0, LENGTH), (2.0, 3.0, 0.0)),
+    );
+    assert_pieces(&pieces, &[(0, 0.0, LENGTH)]);
+    assert_eq!(counts, [1, 0, 0, 0]);
+}
+
+fn one_solution<S: Scalar>() {
+    // Two sources at equal height: the bisector is the perpendicular one, at t = 2.
+    let (pieces, counts) = meet::<S>(
+        wedge(0, (0.0, LENGTH), (1.0, 1.0, 0.0)),
+        wedge(1, (0.0, LENGTH), (3.0, 1.0, 0.0)),
+    );
+    assert_pieces(&pieces, &[(0, 0.0, 2.0), (1, 2.0, LENGTH)]);
+    assert_eq!(counts, [0, 1, 0, 0]);
+}
+
+fn two_solutions<S: Scalar>() {
+    // A pseudo-source close to the edge on the other side, but with sigma = 0.5: better near
+    // t = 2, worse at the ends; eq. (2) has two roots, symmetric about 2, and the existing
+    // wedge is split in two (Fig. 8c).
+    let (pieces, counts) = meet::<S>(
+        wedge(0, (0.0, LENGTH), (2.0, 1.0, 0.0)),
+        wedge(1, (0.0, LENGTH), (2.0, -0.1, 0.5)),
+    );
+    assert_eq!(counts, [0, 0, 1, 0]);
+    assert_eq!(pieces.len(), 3, "{pieces:?}");
+    let (r1, r2) = (pieces[0].2, pieces[1].2);
+    assert_pieces(&pieces, &[(0, 0.0, r1), (1, r1, r2), (0, r2, LENGTH)]);
+    assert!((r1 + r2 - 4.0).abs() < 1e-12);
+    // At a root the two distances agree: sqrt(d^2 + 1) = 0.5 + sqrt(d^2 + 0.01).
+    let d = 2.0 - r1;
+    assert!(((d * d + 1.0).sqrt() - 0.5 - (d * d + 0.01).sqrt()).abs() < 1e-12);
+}
+
+fn infinitely_many_solutions<S: Scalar>() {
+    // Mirror images across the edge (tau differs): one distance function, A = B = C = 0; the
+    // wedge already there stays (step 2.3.2).
+    let (pieces, counts) = meet::<S>(
+        wedge(0, (0.0, LENGTH), (1.5, 2.0, 0.25)),
+        wedge(1, (0.0, LENGTH), (1.5, -2.0, 0.25)),
+    );
+    assert_pieces(&pieces, &[(0, 0.0, LENGTH)]);
+    assert_eq!(counts, [0, 0, 0, 1]);
+}
+
+fn range_covered<S: Scalar>() {
+    // Fig. 8: the new wedge's range [1, 3] lies inside the existing one, and the new wedge is
+    // better on all of it, so the existing wedge keeps both ends.
+    let (pieces, counts) = meet::<S>(
+        wedge(0, (0.0, LENGTH), (2.0, 3.0, 0.0)),
+        wedge(1, (1.0, 3.0), (2.0, 0.5, 0.0)),
+    );
+    assert_pieces(&pieces, &[(0, 0.0, 1.0), (1, 1.0, 3.0), (0, 3.0, LENGTH)]);
+    assert_eq!(counts, [1, 0, 0, 0]);
+}
+
+fn all_cases<S: Scalar>() {
+    zero_solutions::<S>();
+    one_solution::<S>();
+    two_solutions::<S>();
+    infinitely_many_solutions::<S>();
+    range_covered::<S>();
+}
+
+#[test]
+fn section4_cases_in_f64() {
+    all_cases::<f64>();
+}
+
+#[test]
+fn section4_cases_in_exact_reals() {
+    all_cases::<Real>();
+    assert_eq!(Real::take_counts().uncertified, 0);
+}
+
+#[test]
+fn section4_cases_in_the_adaptive_backend() {
+    all_cases::<exact_geodesics::scalar::Adaptive>();
+}
+
+#[test]
+fn the_two_roots_are_the_closed_form_ones() {
+    // sqrt(u + 1) - sqrt(u + 1/100) = 1/2 with u = (t - 2)^2: the sum of the roots is
+    // 0.99 / 0.5 = 1.98, so sqrt(u + 1/100) = (1.98 - 0.5) / 2 = 0.74 and u = 0.5376.
+    let (result, _) = intersect(
+        &Real::from_f64(LENGTH),
+        &[wedge::<Real>(0, (0.0, LENGTH), (2.0, 1.0, 0.0))],
+        &wedge::<Real>(1, (0.0, LENGTH), (2.0, -0.1, 0.5)),
+    );
+    let r1 = 2.0 - 0.5376f64.sqrt();
+    assert!((result[0].b1.to_f64() - r1).abs() < 1e-14);
+    assert!((result[1].b1.to_f64() - (4.0 - r1)).abs() < 1e-14);
+}
