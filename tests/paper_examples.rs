@@ -229,25 +229,16 @@ fn example4_face20_table() {
             (1.790, 1.934, 0.144, 0.0, false, "v5", 1.826),
         ],
     ];
-    let rows = face_rows(&field, FaceId(20));
-    assert_eq!(
-        rows.iter().map(|r| (r.from, r.to)).collect::<Vec<_>>(),
-        [(5, 4), (4, 13), (13, 5)]
-    );
-    for (edge, want) in rows.iter().zip(want) {
-        assert_eq!(edge.wedges.len(), want.len(), "{edge}");
-        for (got, &(b0, b1, d0, d1, tau, s, sigma)) in edge.wedges.iter().zip(want) {
-            let round = |x: f64| format!("{x:.3}");
-            assert_eq!(
-                [got.b0, got.b1, got.d0, got.d1, got.sigma].map(round),
-                [b0, b1, d0, d1, sigma].map(round),
-                "{edge}"
-            );
-            assert_eq!(
-                (got.tau.as_str(), got.s.as_str()),
-                (tau.to_string().as_str(), s)
-            );
-        }
+    // The table holds in f64 and, decided exactly, in the exact backend.
+    let exact = propagate::<exact_geodesics::scalar::Real>(
+        &mesh,
+        &[SurfacePoint::Vertex(VertexId(2))],
+        &PropagateOptions::default(),
+    )
+    .expect("a vertex source");
+    assert_eq!(exact.stats().backend.uncertified, 0);
+    for rows in [face_rows(&field, FaceId(20)), face_rows(&exact, FaceId(20))] {
+        face20_matches(&rows, &want);
     }
     // The evidence for 0.196: the path through v5 at 0.188 and the v5 wedge's end.
     let p = |v: u32| mesh.position(VertexId(v));
@@ -438,4 +429,26 @@ fn subdivision_command_writes_an_svg() {
         assert!(drawing.contains(label), "{label}");
     }
     std::fs::remove_dir_all(&dir).expect("clean up");
+}
+
+fn face20_matches(rows: &[exact_geodesics::paper::table::EdgeRows], want: &[&[Row]; 3]) {
+    assert_eq!(
+        rows.iter().map(|r| (r.from, r.to)).collect::<Vec<_>>(),
+        [(5, 4), (4, 13), (13, 5)]
+    );
+    for (edge, want) in rows.iter().zip(want) {
+        assert_eq!(edge.wedges.len(), want.len(), "{edge}");
+        for (got, &(b0, b1, d0, d1, tau, s, sigma)) in edge.wedges.iter().zip(*want) {
+            let round = |x: f64| format!("{x:.3}");
+            assert_eq!(
+                [got.b0, got.b1, got.d0, got.d1, got.sigma].map(round),
+                [b0, b1, d0, d1, sigma].map(round),
+                "{edge}"
+            );
+            assert_eq!(
+                (got.tau.as_str(), got.s.as_str()),
+                (tau.to_string().as_str(), s)
+            );
+        }
+    }
 }
