@@ -3,11 +3,8 @@
 
 use exact_geodesics::mesh::shapes;
 use exact_geodesics::paper::examples::{
-    eq2_line, eq2_of, six_tuple, unfold_named, EXAMPLE3, EXAMPLE3_EDGE,
+    engine_wedges, eq2_by_backend, six_tuple, unfold_named, EXAMPLE3, EXAMPLE3_EDGE,
 };
-use exact_geodesics::paper::table::edge_rows;
-use exact_geodesics::scalar::{Adaptive, Real};
-use exact_geodesics::{propagate, PropagateOptions, Scalar, SurfacePoint, TriMesh, VertexId};
 
 fn main() {
     let mesh = shapes::paper_example3();
@@ -16,28 +13,10 @@ fn main() {
     for (named, w) in EXAMPLE3.iter().zip(&wedges) {
         println!("{}: {}", named.name, six_tuple(&mesh, w));
     }
-    eq2_in::<f64>("f64", &mesh);
-    eq2_in::<Adaptive>("adaptive", &mesh);
-    eq2_in::<Real>("exact", &mesh);
-    let field = propagate::<f64>(
-        &mesh,
-        &[SurfacePoint::Vertex(VertexId(0))],
-        &PropagateOptions::default(),
-    )
-    .expect("v0 is a vertex of the mesh");
-    let e0 = mesh
-        .edge_between(VertexId(5), VertexId(7))
-        .expect("edge e0");
-    println!("Final wedges of the engine (tau: the face the wedge comes from; f8 = Δv5v7v6, f9 = Δv5v8v7):");
-    print!("{}", edge_rows(&field, VertexId(5), e0, None));
-}
-
-/// Eq. (2) between w1 and w2, unfolded and decided in the backend `S`.
-fn eq2_in<S: Scalar>(backend: &str, mesh: &TriMesh) {
-    let wedges = unfold_named::<S>(mesh, &EXAMPLE3, EXAMPLE3_EDGE, |_| S::zero());
-    println!("Eq. (2) in {backend}:");
-    println!(
-        "  {}",
-        eq2_line((EXAMPLE3[0].name, EXAMPLE3[1].name), &eq2_of(&wedges, 0, 1))
+    print!(
+        "{}",
+        eq2_by_backend(&mesh, &EXAMPLE3, EXAMPLE3_EDGE, &[(0, 1)])
     );
+    println!("Final wedges of the engine (tau: the face the wedge comes from; f8 = Δv5v7v6, f9 = Δv5v8v7):");
+    print!("{}", engine_wedges(&mesh, 0, EXAMPLE3_EDGE));
 }

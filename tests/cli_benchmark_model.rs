@@ -1,32 +1,10 @@
 //! The `benchmark-model` and `verify` commands [LZT §5]: a model written to a directory and
 //! checked by the engine, a user's scene file, and the failures they report.
 
+mod common;
+
+use common::cli::{fails_with, run, stdout};
 use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn run(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_exact-geodesics"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-fn stdout(out: &Output) -> String {
-    assert!(
-        out.status.success(),
-        "command failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout.clone()).expect("UTF-8 output")
-}
-
-/// Fails with exit code 1 and a message containing `needle`.
-fn fails_with(args: &[&str], needle: &str) {
-    let out = run(args);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(1), "stderr: {err}");
-    assert!(err.contains(needle), "expected '{needle}' in: {err}");
-}
 
 fn temp_dir(name: &str) -> PathBuf {
     let dir = std::env::temp_dir()

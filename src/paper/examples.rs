@@ -162,3 +162,71 @@ pub fn eq2_line<S: Scalar>(names: (&str, &str), pair: &Option<Eq2Pair<S>>) -> St
 pub fn eq2_of<S: Scalar>(wedges: &[StripWedge<S>], i: usize, j: usize) -> Option<Eq2Pair<S>> {
     eq2_pair(&wedges[i], &wedges[j])
 }
+
+/// Eq. (2) between pairs of an example's wedges from the source (sigma 0), unfolded and decided
+/// in the backend `S`: one line per pair, then how the backend settled its sign decisions if it
+/// counts them.
+pub fn eq2_report<S: Scalar>(
+    mesh: &TriMesh,
+    strips: &[NamedStrip],
+    edge: (u32, u32),
+    pairs: &[(usize, usize)],
+) -> Vec<String> {
+    S::take_counts();
+    let wedges = unfold_named::<S>(mesh, strips, edge, |_| S::zero());
+    let mut lines: Vec<String> = pairs
+        .iter()
+        .map(|&(i, j)| eq2_line((strips[i].name, strips[j].name), &eq2_of(&wedges, i, j)))
+        .collect();
+    let c = S::take_counts();
+    if c.decisions > 0 {
+        lines.push(format!(
+            "({} sign decisions: {} by the f64 filter, {} by the exact stage, {} certified zeros, {} uncertified)",
+            c.decisions, c.by_filter, c.by_refinement, c.certified_zeros, c.uncertified
+        ));
+    }
+    lines
+}
+
+/// [`eq2_report`] in every backend, f64, adaptive and exact, one after the other.
+pub fn eq2_by_backend(
+    mesh: &TriMesh,
+    strips: &[NamedStrip],
+    edge: (u32, u32),
+    pairs: &[(usize, usize)],
+) -> String {
+    let sections = [
+        ("f64", eq2_report::<f64>(mesh, strips, edge, pairs)),
+        (
+            "adaptive",
+            eq2_report::<crate::scalar::Adaptive>(mesh, strips, edge, pairs),
+        ),
+        (
+            "exact",
+            eq2_report::<crate::scalar::Real>(mesh, strips, edge, pairs),
+        ),
+    ];
+    let mut text = String::new();
+    for (backend, lines) in sections {
+        text.push_str(&format!("Eq. (2) in {backend}:\n"));
+        for line in lines {
+            text.push_str(&format!("  {line}\n"));
+        }
+    }
+    text
+}
+
+/// The engine's final wedges on `edge` for a source at vertex `source`, in f64, read from the
+/// edge's first vertex, as the 7-tuple table.
+pub fn engine_wedges(mesh: &TriMesh, source: u32, edge: (u32, u32)) -> String {
+    let field = crate::propagate::<f64>(
+        mesh,
+        &[crate::SurfacePoint::Vertex(VertexId(source))],
+        &crate::PropagateOptions::default(),
+    )
+    .expect("the example's source is a vertex");
+    let e = mesh
+        .edge_between(VertexId(edge.0), VertexId(edge.1))
+        .expect("the example's edge");
+    super::table::edge_rows(&field, VertexId(edge.0), e, None).to_string()
+}

@@ -2,6 +2,8 @@
 //! and the mesh's accessors only.
 #![allow(dead_code)] // Each test binary uses a different part of this module.
 
+pub mod cli;
+
 use exact_geodesics::mesh::shapes::SplitMix64;
 use exact_geodesics::{FaceId, SurfacePoint, TriMesh, VertexId};
 use std::collections::BinaryHeap;
