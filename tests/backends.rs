@@ -8,7 +8,7 @@ use exact_geodesics::paper::examples::{
     eq2_of, unfold_named, EXAMPLE1, EXAMPLE1_EDGE, EXAMPLE3, EXAMPLE3_EDGE,
 };
 use exact_geodesics::scalar::exact::Certificate;
-use exact_geodesics::scalar::{Adaptive, BisectorRoots, Field, Real, Scalar, Sign};
+use exact_geodesics::scalar::{Adaptive, BisectorRoots, Field, Real, Ring, Scalar, Sign};
 use exact_geodesics::{propagate, PropagateOptions, SurfacePoint, TriMesh, VertexId};
 use proptest::prelude::*;
 use rug::{Integer, Rational};

@@ -372,7 +372,7 @@ fn build_with(s: &Scene, options: &ModelOptions) -> Result<(), BenchmarkError> {
 
 /// The ground truth as an exact real: the sum of the exact lengths of its segments.
 fn exact_length(path: &[Point]) -> exact_geodesics::scalar::Real {
-    use exact_geodesics::scalar::{Field, Real};
+    use exact_geodesics::scalar::{Field, Real, Ring};
     path.windows(2).fold(Real::from_f64(0.0), |sum, s| {
         let dx = Real::from_f64(s[1][0]) - Real::from_f64(s[0][0]);
         let dy = Real::from_f64(s[1][1]) - Real::from_f64(s[0][1]);

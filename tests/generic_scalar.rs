@@ -2,7 +2,7 @@
 //! `Clone` (as exact numbers will be) runs the same propagation and gets the same answers.
 
 use exact_geodesics::mesh::shapes;
-use exact_geodesics::scalar::{BisectorRoots, Field, Scalar, Sign, SourceDistance};
+use exact_geodesics::scalar::{BisectorRoots, Field, Ring, Scalar, Sign, SourceDistance};
 use exact_geodesics::{propagate, PropagateOptions, SurfacePoint, TriMesh, VertexId};
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};
@@ -48,10 +48,13 @@ fn raw(d: &SourceDistance<CloneOnly>) -> SourceDistance<f64> {
 }
 
 /// Every decision is delegated to the f64 backend, so the results must be identical.
-impl Field for CloneOnly {
+impl Ring for CloneOnly {
     fn from_f64(x: f64) -> Self {
         CloneOnly(x)
     }
+}
+
+impl Field for CloneOnly {
     fn to_f64(&self) -> f64 {
         self.0
     }

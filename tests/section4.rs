@@ -2,7 +2,7 @@
 //! of wedges on an edge of length 4, in the f64 and the exact backend.
 
 use exact_geodesics::mmp::intersect;
-use exact_geodesics::scalar::{Field, Real, Scalar};
+use exact_geodesics::scalar::{Field, Real, Ring, Scalar};
 use exact_geodesics::{EdgeId, PseudoSource, Side, Wedge};
 
 const LENGTH: f64 = 4.0;

@@ -14,8 +14,10 @@
 
 use super::audit::{self, DecisionCounts, Settled, Site};
 use super::error_bound::ErrorBound;
-use super::roots::{self, CertifiedSign};
-use super::{BisectorRoots, Field, Real, Scalar, Sign, SourceDistance};
+use super::rational::Q;
+use super::roots;
+use super::roots::Crossings;
+use super::{BisectorRoots, Eq2Coefficients, Field, Ring, Scalar, Sign, SourceDistance};
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -51,12 +53,14 @@ impl Neg for Adaptive {
     }
 }
 
-impl Field for Adaptive {
+impl Ring for Adaptive {
     #[inline(always)]
     fn from_f64(x: f64) -> Self {
         Adaptive(x)
     }
+}
 
+impl Field for Adaptive {
     #[inline(always)]
     fn to_f64(&self) -> f64 {
         self.0
@@ -69,7 +73,7 @@ impl Field for Adaptive {
 }
 
 /// A wedge's distance function with its `f64` inputs as another number type.
-fn lift<T: Field>(d: &SourceDistance<Adaptive>) -> SourceDistance<T> {
+fn lift<T: Ring>(d: &SourceDistance<Adaptive>) -> SourceDistance<T> {
     SourceDistance {
         x: T::from_f64(d.x.0),
         y: T::from_f64(d.y.0),
@@ -148,7 +152,7 @@ impl Scalar for Adaptive {
         }
         filtered(
             || roots::same_distance_function::<ErrorBound>(&lift(a), &lift(b)),
-            || roots::same_distance_function::<Exact>(&lift(a), &lift(b)),
+            || roots::same_distance_function::<Q>(&lift(a), &lift(b)),
         )
     }
 
@@ -161,15 +165,16 @@ impl Scalar for Adaptive {
         let roots = filtered(
             || {
                 let (lo, hi) = (ErrorBound::from_f64(lo.0), ErrorBound::from_f64(hi.0));
-                roots::bisector_roots::<ErrorBound>(&lift(a), &lift(b), &lo, &hi)
-                    .map(|r| r.map(|t| t.to_f64()))
+                roots::crossings::<ErrorBound>(&lift(a), &lift(b), &lo, &hi)
+                    .map(|c| in_f64(c, |x| x.to_f64()))
             },
             || {
-                let (lo, hi) = (Exact::from_f64(lo.0), Exact::from_f64(hi.0));
-                roots::bisector_roots::<Exact>(&lift(a), &lift(b), &lo, &hi)
-                    .map(|r| r.map(|t| t.0.to_f64()))
+                let (lo, hi) = (Q::from_f64(lo.0), Q::from_f64(hi.0));
+                roots::crossings::<Q>(&lift(a), &lift(b), &lo, &hi)
+                    .map(|c| in_f64(c, |x| x.0.to_f64()))
             },
-        );
+        )
+        .map(|u| u + lo.0);
         roots.map(Adaptive)
     }
 
@@ -191,52 +196,33 @@ impl Scalar for Adaptive {
     }
 }
 
-/// Exact reals whose signs are not counted as decisions of their own: the adaptive backend
-/// counts its predicate once, as settled by the exact stage.
-#[derive(Clone, Debug)]
-struct Exact(Real);
-
-macro_rules! exact_ops {
-    ($($tr:ident $f:ident),*) => {$(
-        impl $tr for Exact {
-            type Output = Exact;
-            fn $f(self, o: Exact) -> Exact {
-                Exact($tr::$f(self.0, o.0))
+/// Crossings decided in a filter or exact type, positions from the range's start in `f64`: the
+/// roots of eq. (2) come from its coefficients rounded to `f64`, without cancellation.
+fn in_f64<T: roots::CertifiedSign>(c: Crossings<T>, f: impl Fn(&T) -> f64) -> BisectorRoots<f64> {
+    match c {
+        Crossings::None => BisectorRoots::None,
+        Crossings::Infinite => BisectorRoots::Infinite,
+        Crossings::At(u) => BisectorRoots::One(f(&u)),
+        Crossings::Quadratic {
+            eq2,
+            smaller,
+            larger,
+        } => {
+            let eq2 = Eq2Coefficients {
+                a: f(&eq2.a),
+                b: f(&eq2.b),
+                c: f(&eq2.c),
+            };
+            let (a, b, c) = (eq2.a, eq2.b, eq2.c);
+            let q = -0.5 * (b + b.signum() * (b * b - 4.0 * a * c).max(0.0).sqrt());
+            let (r, s) = if q == 0.0 { (0.0, 0.0) } else { (q / a, c / q) };
+            let (r, s) = (r.min(s), r.max(s));
+            match (smaller, larger) {
+                (true, true) => BisectorRoots::Two(r, s),
+                (true, false) => BisectorRoots::One(r),
+                (false, true) => BisectorRoots::One(s),
+                (false, false) => BisectorRoots::None,
             }
         }
-        impl<'a> $tr<&'a Exact> for Exact {
-            type Output = Exact;
-            fn $f(self, o: &'a Exact) -> Exact {
-                Exact($tr::$f(self.0, &o.0))
-            }
-        }
-    )*};
-}
-exact_ops!(Add add, Sub sub, Mul mul, Div div);
-
-impl Neg for Exact {
-    type Output = Exact;
-    fn neg(self) -> Exact {
-        Exact(-self.0)
-    }
-}
-
-impl Field for Exact {
-    fn from_f64(x: f64) -> Self {
-        Exact(Real::from_f64(x))
-    }
-
-    fn to_f64(&self) -> f64 {
-        self.0.to_f64()
-    }
-
-    fn sqrt(&self) -> Self {
-        Exact(self.0.sqrt())
-    }
-}
-
-impl CertifiedSign for Exact {
-    fn certified_sign(&self) -> Option<Sign> {
-        Some(self.0.certified_sign().0)
     }
 }

@@ -1,6 +1,6 @@
 //! The bisector of two wedges on an edge: eq. (1) and its quadratic form eq. (2) [LZT §2].
 
-use super::Field;
+use super::{Field, Ring};
 
 /// The distance function of a wedge along its edge: `D(t) = sigma + sqrt((t - x)^2 + y^2)`,
 /// where `(x, y)` is the unfolded pseudo-source in the edge's frame and `sigma` its distance to
@@ -37,7 +37,7 @@ pub struct Eq2Coefficients<S> {
     pub c: S,
 }
 
-impl<S: Field> Eq2Coefficients<S> {
+impl<S: Ring> Eq2Coefficients<S> {
     /// Eq. (2) for two wedges, with positions measured from `origin` on the edge (the engine
     /// passes the left end of the shared range, which keeps the f64 coefficients small).
     pub fn new(w1: &SourceDistance<S>, w2: &SourceDistance<S>, origin: &S) -> Self {

@@ -7,7 +7,7 @@
 //! without rounding from exact inputs has bound zero, so exact zeros are recognised.
 
 use super::roots::CertifiedSign;
-use super::{Field, Sign};
+use super::{Field, Ring, Sign};
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// Twice the unit roundoff: covers `|x - fl(x)| <= u |x| <= u |fl(x)| / (1 - u)`.
@@ -106,7 +106,7 @@ macro_rules! by_reference {
 }
 by_reference!(Add add, Sub sub, Mul mul, Div div);
 
-impl Field for ErrorBound {
+impl Ring for ErrorBound {
     #[inline(always)]
     fn from_f64(x: f64) -> Self {
         ErrorBound {
@@ -114,7 +114,9 @@ impl Field for ErrorBound {
             error: 0.0,
         }
     }
+}
 
+impl Field for ErrorBound {
     #[inline(always)]
     fn to_f64(&self) -> f64 {
         self.value

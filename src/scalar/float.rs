@@ -4,7 +4,7 @@
 //! contains no epsilon. All tolerances are relative to a length of the edge at hand, so results
 //! do not depend on the scale of the model (compare Observation 3 [LZT §6]).
 
-use super::{BisectorRoots, Eq2Coefficients, Field, Scalar, Sign, SourceDistance};
+use super::{BisectorRoots, Eq2Coefficients, Field, Ring, Scalar, Sign, SourceDistance};
 use std::cmp::Ordering;
 
 /// The f64 backend's tolerance policy, one constant per kind of decision.
@@ -28,12 +28,14 @@ impl FloatTolerance {
     pub const ROOT_RESIDUAL: f64 = 1e-9;
 }
 
-impl Field for f64 {
+impl Ring for f64 {
     #[inline(always)]
     fn from_f64(x: f64) -> Self {
         x
     }
+}
 
+impl Field for f64 {
     #[inline(always)]
     fn to_f64(&self) -> f64 {
         *self

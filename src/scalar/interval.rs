@@ -7,7 +7,7 @@
 //! for `*`, `/` and `sqrt`) shows that rounding went the wrong way.
 
 use super::roots::CertifiedSign;
-use super::{Field, Sign};
+use super::{Field, Ring, Sign};
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// A closed interval `[lo, hi]` of reals, with `f64` bounds (possibly infinite).
@@ -231,12 +231,14 @@ macro_rules! by_reference {
 }
 by_reference!(Add add, Sub sub, Mul mul, Div div);
 
-impl Field for Interval {
+impl Ring for Interval {
     #[inline(always)]
     fn from_f64(x: f64) -> Self {
         Interval::point(x)
     }
+}
 
+impl Field for Interval {
     fn to_f64(&self) -> f64 {
         if self.lo.is_finite() && self.hi.is_finite() {
             self.lo + 0.5 * (self.hi - self.lo)

@@ -19,6 +19,7 @@ mod error_bound;
 pub mod exact;
 pub mod float;
 mod interval;
+mod rational;
 mod roots;
 
 pub use adaptive::Adaptive;
@@ -65,13 +66,13 @@ impl Sign {
     }
 }
 
-/// The constructions of a number type: an ordered field with square roots of non-negative
-/// numbers. Shared by the engine's [`Scalar`]s and by the number types that only filter or
-/// certify signs ([`Interval`]).
+/// Exact-valued arithmetic: `+ - * /` and the exact value of an `f64`. Enough to evaluate the
+/// polynomials and rational functions whose signs the decisions need; exact rationals are rings
+/// in this sense, and so is every [`Field`].
 ///
 /// Values are `Clone`, not `Copy`, so that exact numbers (big rationals, expression DAGs) fit;
 /// operators take their right operand by reference where a clone would otherwise be needed.
-pub trait Field:
+pub trait Ring:
     Clone
     + Debug
     + Send
@@ -89,7 +90,12 @@ pub trait Field:
 {
     /// The exact value of an `f64` (every finite `f64` is a binary rational).
     fn from_f64(x: f64) -> Self;
+}
 
+/// The constructions of a number type: a [`Ring`] (an ordered field, strictly) with square
+/// roots of non-negative numbers. Shared by the engine's [`Scalar`]s and by the number types
+/// that only filter or certify signs ([`Interval`]).
+pub trait Field: Ring {
     /// The nearest `f64`, for output, priority keys and reports; never used for a decision.
     fn to_f64(&self) -> f64;
 

@@ -21,7 +21,7 @@ mod refine;
 
 use super::audit::{self, DecisionCounts, Settled, Site};
 use super::roots::{self, CertifiedSign};
-use super::{BisectorRoots, Field, Interval, Scalar, Sign, SourceDistance};
+use super::{BisectorRoots, Field, Interval, Ring, Scalar, Sign, SourceDistance};
 use node::Node;
 use rug::{Float, Rational};
 use std::cmp::Ordering;
@@ -219,11 +219,13 @@ impl Neg for Real {
     }
 }
 
-impl Field for Real {
+impl Ring for Real {
     fn from_f64(x: f64) -> Self {
         Real::from_rational(Rational::from_f64(x).unwrap_or_default())
     }
+}
 
+impl Field for Real {
     /// The nearest `f64` (from a 128-bit enclosure unless the filter is already a point).
     fn to_f64(&self) -> f64 {
         let f = self.filter();
@@ -293,7 +295,9 @@ impl Scalar for Real {
         lo: &Self,
         hi: &Self,
     ) -> BisectorRoots<Self> {
-        roots::bisector_roots(a, b, lo, hi).expect("the exact backend decides every sign")
+        let crossings =
+            roots::crossings(a, b, lo, hi).expect("the exact backend decides every sign");
+        roots::into_roots(crossings, lo)
     }
 
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign {
