@@ -24,6 +24,18 @@ const MAX_TERMS: usize = 256;
 /// Products needing more term-by-term multiplications than this are abandoned.
 const MAX_PRODUCT_WORK: usize = 2048;
 
+/// Normal forms with a coefficient larger than this (numerator plus denominator bits) are
+/// abandoned: rational arithmetic on them costs more than the separation bound would.
+const MAX_COEFFICIENT_BITS: u32 = 16384;
+
+/// Term-by-term multiplications one zero test may spend, over all the nodes it normalises;
+/// a test that runs out leaves the zero to the separation bound.
+const WORK_PER_TEST: usize = 50_000;
+
+thread_local! {
+    static WORK_LEFT: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
 /// A product of distinct symbols, in increasing order.
 type Monomial = Vec<u32>;
 
@@ -83,7 +95,10 @@ impl NormalForm {
     }
 
     fn checked(self) -> Option<NormalForm> {
-        (self.0.len() <= MAX_TERMS).then_some(self)
+        let small = |c: &Rational| {
+            c.numer().significant_bits() + c.denom().significant_bits() <= MAX_COEFFICIENT_BITS
+        };
+        (self.0.len() <= MAX_TERMS && self.0.values().all(small)).then_some(self)
     }
 
     fn add(&self, other: &NormalForm, sign: i32) -> Option<NormalForm> {
@@ -117,7 +132,10 @@ impl NormalForm {
     }
 
     fn mul(&self, other: &NormalForm) -> Option<NormalForm> {
-        if self.0.len() * other.0.len() > MAX_PRODUCT_WORK {
+        let work = self.0.len() * other.0.len();
+        if work > MAX_PRODUCT_WORK
+            || WORK_LEFT.with(|w| w.replace(w.get().saturating_sub(work))) < work
+        {
             return None;
         }
         let mut sum = NormalForm::default();
@@ -157,7 +175,7 @@ impl NormalForm {
                 }
             }
         }
-        Some(sum)
+        sum.checked()
     }
 
     fn div(&self, other: &NormalForm) -> Option<NormalForm> {
@@ -246,19 +264,24 @@ fn sqrt_of_rational(r: &Rational) -> NormalForm {
 /// The normal form of a node's value, memoized on the node; `None` if it grew too large or
 /// a square root's radicand could not be shown positive.
 pub(crate) fn normal_form(node: &Arc<Node>) -> Option<NormalForm> {
+    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
+    memoized(node)
+}
+
+fn memoized(node: &Arc<Node>) -> Option<NormalForm> {
     node.normal_form.get_or_init(|| compute(node)).clone()
 }
 
 fn compute(node: &Arc<Node>) -> Option<NormalForm> {
     match &node.op {
         Op::Leaf(r) => Some(NormalForm::rational(r.clone())),
-        Op::Add(a, b) => normal_form(a)?.add(&normal_form(b)?, 1),
-        Op::Sub(a, b) => normal_form(a)?.add(&normal_form(b)?, -1),
-        Op::Mul(a, b) => normal_form(a)?.mul(&normal_form(b)?),
-        Op::Div(a, b) => normal_form(a)?.div(&normal_form(b)?),
-        Op::Neg(a) => Some(normal_form(a)?.neg()),
+        Op::Add(a, b) => memoized(a)?.add(&memoized(b)?, 1),
+        Op::Sub(a, b) => memoized(a)?.add(&memoized(b)?, -1),
+        Op::Mul(a, b) => memoized(a)?.mul(&memoized(b)?),
+        Op::Div(a, b) => memoized(a)?.div(&memoized(b)?),
+        Op::Neg(a) => Some(memoized(a)?.neg()),
         Op::Sqrt(a) => {
-            let radicand = normal_form(a)?;
+            let radicand = memoized(a)?;
             // The node is sqrt(max(a, 0)): the symbol stands for it only if a > 0 (or a = 0).
             if radicand.is_zero() {
                 return Some(NormalForm::default());
