@@ -5,7 +5,7 @@
 //! - Comparisons and signs of stored values are exact as they stand (no tolerance).
 //! - Orientation is Shewchuk's adaptive `orient2d` (the `robust` crate).
 //! - Eq. (2) and the validity of its roots (Property 1) are decided on the `f64` inputs by an
-//!   `f64` filter with a running error bound; only when it cannot tell, by the exact stage: the same
+//!   `f64` filter with a running error bound, then a double-double one; only when neither can tell, by the exact stage: the same
 //!   decisions on exact [`Real`]s built from the inputs (exact rationals, with the square root
 //!   of the discriminant certified by refinement).
 //!
@@ -13,6 +13,7 @@
 //! stored values are exact by themselves and not counted.
 
 use super::audit::{self, DecisionCounts, Settled, Site};
+use super::double_double::DoubleDouble;
 use super::error_bound::ErrorBound;
 use super::rational::Q;
 use super::roots;
@@ -81,14 +82,19 @@ fn lift<T: Ring>(d: &SourceDistance<Adaptive>) -> SourceDistance<T> {
     }
 }
 
-/// Runs a predicate through the interval filter, then, if it cannot tell, exactly.
-fn filtered<R>(filter: impl FnOnce() -> Option<R>, exact: impl FnOnce() -> Option<R>) -> R {
-    if let Some(r) = filter() {
+/// Runs a predicate through the `f64` filter, then the double-double one, then, if neither can
+/// tell, exactly.
+fn filtered<R>(
+    filter: impl FnOnce() -> Option<R>,
+    finer: impl FnOnce() -> Option<R>,
+    exact: impl FnOnce() -> Option<R>,
+) -> R {
+    if let Some(r) = filter().or_else(finer) {
         audit::record(Settled::Filter, || [0.0; 2]);
         return r;
     }
     audit::record(Settled::Refinement, || [0.0; 2]);
-    exact().expect("exact reals decide every sign")
+    exact().expect("exact rationals decide every sign")
 }
 
 /// The exact sign of an `f64`.
@@ -152,6 +158,7 @@ impl Scalar for Adaptive {
         }
         filtered(
             || roots::same_distance_function::<ErrorBound>(&lift(a), &lift(b)),
+            || roots::same_distance_function::<DoubleDouble>(&lift(a), &lift(b)),
             || roots::same_distance_function::<Q>(&lift(a), &lift(b)),
         )
     }
@@ -166,6 +173,11 @@ impl Scalar for Adaptive {
             || {
                 let (lo, hi) = (ErrorBound::from_f64(lo.0), ErrorBound::from_f64(hi.0));
                 roots::crossings::<ErrorBound>(&lift(a), &lift(b), &lo, &hi)
+                    .map(|c| in_f64(c, |x| x.to_f64()))
+            },
+            || {
+                let (lo, hi) = (DoubleDouble::from_f64(lo.0), DoubleDouble::from_f64(hi.0));
+                roots::crossings::<DoubleDouble>(&lift(a), &lift(b), &lo, &hi)
                     .map(|c| in_f64(c, |x| x.to_f64()))
             },
             || {

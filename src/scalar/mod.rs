@@ -15,6 +15,7 @@
 mod adaptive;
 mod audit;
 mod bisector;
+mod double_double;
 mod error_bound;
 pub mod exact;
 pub mod float;
