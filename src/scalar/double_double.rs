@@ -154,18 +154,7 @@ impl Div for DoubleDouble {
     }
 }
 
-macro_rules! by_reference {
-    ($($tr:ident $f:ident),*) => {$(
-        impl<'a> $tr<&'a DoubleDouble> for DoubleDouble {
-            type Output = DoubleDouble;
-            #[inline(always)]
-            fn $f(self, o: &'a DoubleDouble) -> DoubleDouble {
-                $tr::$f(self, *o)
-            }
-        }
-    )*};
-}
-by_reference!(Add add, Sub sub, Mul mul, Div div);
+ops_by_reference_for_copy!(DoubleDouble);
 
 impl Ring for DoubleDouble {
     #[inline(always)]

@@ -93,18 +93,7 @@ impl Neg for ErrorBound {
     }
 }
 
-macro_rules! by_reference {
-    ($($tr:ident $f:ident),*) => {$(
-        impl<'a> $tr<&'a ErrorBound> for ErrorBound {
-            type Output = ErrorBound;
-            #[inline(always)]
-            fn $f(self, o: &'a ErrorBound) -> ErrorBound {
-                $tr::$f(self, *o)
-            }
-        }
-    )*};
-}
-by_reference!(Add add, Sub sub, Mul mul, Div div);
+ops_by_reference_for_copy!(ErrorBound);
 
 impl Ring for ErrorBound {
     #[inline(always)]

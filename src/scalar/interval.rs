@@ -6,7 +6,6 @@
 //! only when the error-free transformation of the operation (TwoSum, or a fused multiply-add
 //! for `*`, `/` and `sqrt`) shows that rounding went the wrong way.
 
-use super::roots::CertifiedSign;
 use super::{Field, Ring, Sign};
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -218,18 +217,7 @@ impl Div for Interval {
     }
 }
 
-macro_rules! by_reference {
-    ($($tr:ident $f:ident),*) => {$(
-        impl<'a> std::ops::$tr<&'a Interval> for Interval {
-            type Output = Interval;
-            #[inline(always)]
-            fn $f(self, o: &'a Interval) -> Interval {
-                std::ops::$tr::$f(self, *o)
-            }
-        }
-    )*};
-}
-by_reference!(Add add, Sub sub, Mul mul, Div div);
+ops_by_reference_for_copy!(Interval);
 
 impl Ring for Interval {
     #[inline(always)]
@@ -258,13 +246,6 @@ impl Field for Interval {
             lo: sqrt_bounds(self.lo.max(0.0)).0,
             hi: sqrt_bounds(self.hi).1,
         }
-    }
-}
-
-impl CertifiedSign for Interval {
-    #[inline(always)]
-    fn certified_sign(&self) -> Option<Sign> {
-        self.sign()
     }
 }
 

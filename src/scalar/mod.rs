@@ -12,6 +12,22 @@
 //! Backends that certify count their decisions ([`DecisionCounts`]) per thread; the engine
 //! collects them per propagation through [`Scalar::take_counts`].
 
+/// `Add<&T>`, `Sub<&T>`, `Mul<&T>`, `Div<&T>` for a `Copy` number type, by copying the operand.
+macro_rules! ops_by_reference_for_copy {
+    ($t:ty) => {
+        ops_by_reference_for_copy!($t: Add add, Sub sub, Mul mul, Div div);
+    };
+    ($t:ty: $($tr:ident $f:ident),*) => {$(
+        impl<'a> std::ops::$tr<&'a $t> for $t {
+            type Output = $t;
+            #[inline(always)]
+            fn $f(self, o: &'a $t) -> $t {
+                std::ops::$tr::$f(self, *o)
+            }
+        }
+    )*};
+}
+
 mod adaptive;
 mod audit;
 mod bisector;
