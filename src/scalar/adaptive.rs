@@ -4,10 +4,9 @@
 //!
 //! - Comparisons and signs of stored values are exact as they stand (no tolerance).
 //! - Orientation is Shewchuk's adaptive `orient2d` (the `robust` crate).
-//! - Eq. (2) and the validity of its roots (Property 1) are decided on the `f64` inputs by an
-//!   `f64` filter with a running error bound, then a double-double one; only when neither can tell, by the exact stage: the same
-//!   decisions on exact [`Real`]s built from the inputs (exact rationals, with the square root
-//!   of the discriminant certified by refinement).
+//! - Eq. (2) and the validity of its roots (Property 1) are signs of polynomials in the `f64`
+//!   inputs (the `roots` module): decided by an `f64` filter with a running error bound, then by a
+//!   double-double one, and only when neither can tell by the exact stage, exact rationals.
 //!
 //! The filter and exact-stage counts of those predicates are reported per run; comparisons of
 //! stored values are exact by themselves and not counted.

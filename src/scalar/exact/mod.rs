@@ -7,7 +7,7 @@
 //! 2. without square roots below it, exact rational evaluation; with them, MPFR intervals at
 //!    doubling precision until the enclosure excludes zero;
 //! 3. a zero is certified when the enclosure is smaller than the BFMSS separation bound
-//!    [BFMSS01] (a non-zero value cannot be that small), or when the DAG is zero by structure;
+//!    \[BFMSS01\] (a non-zero value cannot be that small), or when the DAG is zero by structure;
 //! 4. a decision that reaches the precision cap ([`set_precision_cap`]) without either is
 //!    *uncertified*: the value is then within `2^-cap` of zero, it is treated as zero (a tie),
 //!    and it is recorded with its place, never passed off as exact.

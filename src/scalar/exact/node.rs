@@ -2,7 +2,7 @@
 //!
 //! Each node carries, computed once when it is built:
 //! - an `f64` [`Interval`] enclosing its value (the filter);
-//! - the BFMSS quantities `log2 u(E)` and `log2 l(E)` of its separation bound [BFMSS01];
+//! - the BFMSS quantities `log2 u(E)` and `log2 l(E)` of its separation bound \[BFMSS01\];
 //! - whether a square root occurs below it (if not, it can be evaluated as a rational).
 //!
 //! Operations on two rational leaves fold into a rational leaf (while it stays small), and the

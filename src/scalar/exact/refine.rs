@@ -169,7 +169,7 @@ fn sqrt_count(root: &Arc<Node>, limit: usize) -> usize {
     count
 }
 
-/// The BFMSS separation bound [BFMSS01] in bits: if the value `E` of the DAG is not zero then
+/// The BFMSS separation bound \[BFMSS01\] in bits: if the value `E` of the DAG is not zero then
 /// `|E| >= 2^-bits`, with `bits = (D - 1) log2 u(E) + log2 l(E)` and `D = 2^k` for `k`
 /// distinct square roots. `None` when the bound exceeds `cap` (it could not be reached).
 pub(crate) fn zero_bound_bits(root: &Arc<Node>, cap: u32) -> Option<u32> {
