@@ -70,7 +70,6 @@ fn min_on<S: Scalar>(d: &SourceDistance<S>, lo: &S, hi: &S, at_lo: &S, at_hi: &S
 /// otherwise its roots cut the range, and each piece goes to the wedge better at its middle.
 /// Returns the case and whether eq. (2) was solved.
 fn split_shared_range<S: Scalar>(
-    counts: &mut Eq2Counts,
     pieces: &mut Vec<Piece<S>>,
     theirs: &SourceDistance<S>,
     mine: &SourceDistance<S>,
@@ -79,7 +78,6 @@ fn split_shared_range<S: Scalar>(
     id: u32,
 ) -> (Eq2Case, bool) {
     if S::same_distance_function(theirs, mine, &(hi.clone() - &lo)) {
-        counts.count(Eq2Case::Infinite);
         push_piece(pieces, lo, hi, Owner::Old(id));
         return (Eq2Case::Infinite, true);
     }
@@ -87,19 +85,16 @@ fn split_shared_range<S: Scalar>(
     let (my_lo, my_hi) = (mine.at(&lo), mine.at(&hi));
     let their_max = S::max_of(&their_lo, &their_hi);
     if min_on(mine, &lo, &hi, &my_lo, &my_hi).compare_distance(&their_max) != Ordering::Less {
-        counts.count(Eq2Case::None);
         push_piece(pieces, lo, hi, Owner::Old(id));
         return (Eq2Case::None, false);
     }
     let my_max = S::max_of(&my_lo, &my_hi);
     if my_max.compare_distance(&min_on(theirs, &lo, &hi, &their_lo, &their_hi)) == Ordering::Less {
-        counts.count(Eq2Case::None);
         push_piece(pieces, lo, hi, Owner::New);
         return (Eq2Case::None, false);
     }
     let roots = S::bisector_roots(theirs, mine, &lo, &hi);
     let case = roots.case();
-    counts.count(case);
     let (first, second) = match roots {
         BisectorRoots::One(r) => (Some(r), None),
         BisectorRoots::Two(r, s) => (Some(r), Some(s)),
@@ -146,7 +141,8 @@ fn cut_into_pieces<'a, S: Scalar>(
             let range = [lo.to_f64(), hi.to_f64()];
             (range, [eq2.a, eq2.b, eq2.c].map(|c| c.to_f64()))
         });
-        let (case, solved) = split_shared_range(counts, pieces, &theirs, &mine, lo, hi.clone(), id);
+        let (case, solved) = split_shared_range(pieces, &theirs, &mine, lo, hi.clone(), id);
+        counts.count(case);
         if let (Some(log), Some((range, coefficients))) = (log.as_deref_mut(), record) {
             log.push(Eq2Decision {
                 edge: w.edge.0,

@@ -11,13 +11,12 @@
 //! The filter and exact-stage counts of those predicates are reported per run; comparisons of
 //! stored values are exact by themselves and not counted.
 
-use super::audit::{self, DecisionCounts, Settled, Site};
+use super::audit::{self, Certificate, DecisionCounts, Site};
 use super::double_double::DoubleDouble;
 use super::error_bound::ErrorBound;
 use super::rational::Q;
 use super::roots;
-use super::roots::Crossings;
-use super::{BisectorRoots, Eq2Coefficients, Field, Ring, Scalar, Sign, SourceDistance};
+use super::{BisectorRoots, Field, Ring, Scalar, Sign, SourceDistance};
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -89,10 +88,10 @@ fn filtered<R>(
     exact: impl FnOnce() -> Option<R>,
 ) -> R {
     if let Some(r) = filter().or_else(finer) {
-        audit::record(Settled::Filter, || [0.0; 2]);
+        audit::record(Certificate::Filter, || [0.0; 2]);
         return r;
     }
-    audit::record(Settled::Refinement, || [0.0; 2]);
+    audit::record(Certificate::Refinement, || [0.0; 2]);
     exact().expect("exact rationals decide every sign")
 }
 
@@ -168,25 +167,21 @@ impl Scalar for Adaptive {
         lo: &Self,
         hi: &Self,
     ) -> BisectorRoots<Self> {
-        let roots = filtered(
+        let crossings = filtered(
             || {
                 let (lo, hi) = (ErrorBound::from_f64(lo.0), ErrorBound::from_f64(hi.0));
-                roots::crossings::<ErrorBound>(&lift(a), &lift(b), &lo, &hi)
-                    .map(|c| in_f64(c, |x| x.to_f64()))
+                roots::crossings(&lift(a), &lift(b), &lo, &hi).map(|c| c.map(|x| x.to_f64()))
             },
             || {
                 let (lo, hi) = (DoubleDouble::from_f64(lo.0), DoubleDouble::from_f64(hi.0));
-                roots::crossings::<DoubleDouble>(&lift(a), &lift(b), &lo, &hi)
-                    .map(|c| in_f64(c, |x| x.to_f64()))
+                roots::crossings(&lift(a), &lift(b), &lo, &hi).map(|c| c.map(|x| x.to_f64()))
             },
             || {
                 let (lo, hi) = (Q::from_f64(lo.0), Q::from_f64(hi.0));
-                roots::crossings::<Q>(&lift(a), &lift(b), &lo, &hi)
-                    .map(|c| in_f64(c, |x| x.0.to_f64()))
+                roots::crossings(&lift(a), &lift(b), &lo, &hi).map(|c| c.map(|x| x.0.to_f64()))
             },
-        )
-        .map(|u| u + lo.0);
-        roots.map(Adaptive)
+        );
+        roots::into_f64_roots(crossings, lo.0).map(Adaptive)
     }
 
     #[inline]
@@ -204,36 +199,5 @@ impl Scalar for Adaptive {
 
     fn take_counts() -> DecisionCounts {
         audit::take()
-    }
-}
-
-/// Crossings decided in a filter or exact type, positions from the range's start in `f64`: the
-/// roots of eq. (2) come from its coefficients rounded to `f64`, without cancellation.
-fn in_f64<T: roots::CertifiedSign>(c: Crossings<T>, f: impl Fn(&T) -> f64) -> BisectorRoots<f64> {
-    match c {
-        Crossings::None => BisectorRoots::None,
-        Crossings::Infinite => BisectorRoots::Infinite,
-        Crossings::At(u) => BisectorRoots::One(f(&u)),
-        Crossings::Quadratic {
-            eq2,
-            smaller,
-            larger,
-        } => {
-            let eq2 = Eq2Coefficients {
-                a: f(&eq2.a),
-                b: f(&eq2.b),
-                c: f(&eq2.c),
-            };
-            let (a, b, c) = (eq2.a, eq2.b, eq2.c);
-            let q = -0.5 * (b + b.signum() * (b * b - 4.0 * a * c).max(0.0).sqrt());
-            let (r, s) = if q == 0.0 { (0.0, 0.0) } else { (q / a, c / q) };
-            let (r, s) = (r.min(s), r.max(s));
-            match (smaller, larger) {
-                (true, true) => BisectorRoots::Two(r, s),
-                (true, false) => BisectorRoots::One(r),
-                (false, true) => BisectorRoots::One(s),
-                (false, false) => BisectorRoots::None,
-            }
-        }
     }
 }

@@ -55,13 +55,24 @@ pub struct DecisionCounts {
 /// How many uncertified decisions keep their place in [`DecisionCounts::uncertified_sites`].
 const KEPT_SITES: usize = 64;
 
-/// How one decision was settled.
+/// How the sign of a value was established.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Settled {
+pub enum Certificate {
+    /// A floating-point filter excluded zero (or was the point zero).
     Filter,
+    /// The exact stage: exact rationals, or a refined interval that excluded zero.
     Refinement,
+    /// Proved zero: below the separation bound, by a zero normal form, or by rational value.
     CertifiedZero,
-    Uncertified { precision: u32 },
+    /// Not established within the precision cap (bits reached); the sign given is zero.
+    Uncertified(u32),
+}
+
+impl Certificate {
+    /// Whether the sign is proved.
+    pub fn is_certified(self) -> bool {
+        !matches!(self, Certificate::Uncertified(_))
+    }
 }
 
 thread_local! {
@@ -74,15 +85,15 @@ pub(crate) fn locate(site: Site) {
 }
 
 /// Counts one decision; `enclosure` is only read for uncertified ones.
-pub(crate) fn record(settled: Settled, enclosure: impl FnOnce() -> [f64; 2]) {
+pub(crate) fn record(settled: Certificate, enclosure: impl FnOnce() -> [f64; 2]) {
     COUNTS.with(|c| {
         let mut c = c.borrow_mut();
         c.decisions += 1;
         match settled {
-            Settled::Filter => c.by_filter += 1,
-            Settled::Refinement => c.by_refinement += 1,
-            Settled::CertifiedZero => c.certified_zeros += 1,
-            Settled::Uncertified { precision } => {
+            Certificate::Filter => c.by_filter += 1,
+            Certificate::Refinement => c.by_refinement += 1,
+            Certificate::CertifiedZero => c.certified_zeros += 1,
+            Certificate::Uncertified(precision) => {
                 c.uncertified += 1;
                 if c.uncertified_sites.len() < KEPT_SITES {
                     let site = SITE.with(Cell::get);

@@ -40,7 +40,7 @@ mod rational;
 mod roots;
 
 pub use adaptive::Adaptive;
-pub use audit::{DecisionCounts, DecisionSite, Site};
+pub use audit::{Certificate, DecisionCounts, DecisionSite, Site};
 pub use bisector::{BisectorRoots, Eq2Case, Eq2Coefficients, SourceDistance};
 pub use exact::Real;
 pub use interval::Interval;

@@ -26,12 +26,40 @@ pub(crate) enum Crossings<T> {
     Infinite,
     /// One solution, with its position from the range's start, exact in `T`.
     At(T),
-    /// Eq. (2) has two distinct roots; which of them (smaller, larger) are solutions.
+    /// Eq. (2) has two distinct roots; which of them (smaller, larger) are solutions, with the
+    /// sign of `A`, which orders them.
     Quadratic {
         eq2: Eq2Coefficients<T>,
+        sign_a: Sign,
         smaller: bool,
         larger: bool,
     },
+}
+
+impl<T> Crossings<T> {
+    /// The same crossings with every value mapped by `f` (e.g. exact values rounded to `f64`).
+    pub(crate) fn map<U>(self, f: impl Fn(&T) -> U) -> Crossings<U> {
+        match self {
+            Crossings::None => Crossings::None,
+            Crossings::Infinite => Crossings::Infinite,
+            Crossings::At(u) => Crossings::At(f(&u)),
+            Crossings::Quadratic {
+                eq2,
+                sign_a,
+                smaller,
+                larger,
+            } => Crossings::Quadratic {
+                eq2: Eq2Coefficients {
+                    a: f(&eq2.a),
+                    b: f(&eq2.b),
+                    c: f(&eq2.c),
+                },
+                sign_a,
+                smaller,
+                larger,
+            },
+        }
+    }
 }
 
 /// Whether two wedges have the same distance function: `A = B = C = 0` in eq. (2).
@@ -192,45 +220,73 @@ pub(crate) fn crossings<T: CertifiedSign>(
     let (smaller, larger) = (solves(false)?, solves(true)?);
     Some(Crossings::Quadratic {
         eq2,
+        sign_a: sa,
         smaller,
         larger,
     })
 }
 
-/// The roots of eq. (2) in increasing order, for two distinct real roots, in a [`Field`].
-pub(crate) fn quadratic_roots<S: Field>(eq2: &Eq2Coefficients<S>, a_positive: bool) -> [S; 2] {
+/// The roots of eq. (2) in increasing order, for two distinct real roots, in a [`Field`]:
+/// `(-B -+ sqrt(D)) / 2A`, ordered by the sign of `A`. The exact backend wants this shape (one
+/// square root over the coefficients, which its normal form handles); `f64` wants the
+/// cancellation-free one of [`stable_roots`].
+pub(crate) fn quadratic_roots<S: Field>(eq2: &Eq2Coefficients<S>, sign_a: Sign) -> [S; 2] {
     let two = S::from_f64(2.0);
     let disc = eq2.b.clone() * &eq2.b - two.clone() * &two * &eq2.a * &eq2.c;
     let root = disc.sqrt();
     let twice_a = two * &eq2.a;
     let minus = (-eq2.b.clone() - &root) / &twice_a;
     let plus = (-eq2.b.clone() + &root) / &twice_a;
-    if a_positive {
+    if sign_a == Sign::Positive {
         [minus, plus]
     } else {
         [plus, minus]
     }
 }
 
+/// The roots of eq. (2) in increasing order in `f64`, without cancellation:
+/// `q = -(B + sign(B) sqrt(D)) / 2`, and the roots `q / A` and `C / q`.
+pub(crate) fn stable_roots(eq2: &Eq2Coefficients<f64>) -> [f64; 2] {
+    let (a, b, c) = (eq2.a, eq2.b, eq2.c);
+    let q = -0.5 * (b + b.signum() * (b * b - 4.0 * a * c).max(0.0).sqrt());
+    let (r, s) = if q == 0.0 { (0.0, 0.0) } else { (q / a, c / q) };
+    [r.min(s), r.max(s)]
+}
+
+/// Which of the two roots are solutions, as [`BisectorRoots`] back on the edge.
+fn chosen<S: Field>([r, s]: [S; 2], smaller: bool, larger: bool, lo: &S) -> BisectorRoots<S> {
+    match (smaller, larger) {
+        (true, true) => BisectorRoots::Two(r + lo, s + lo),
+        (true, false) => BisectorRoots::One(r + lo),
+        (false, true) => BisectorRoots::One(s + lo),
+        (false, false) => BisectorRoots::None,
+    }
+}
+
+/// [`into_roots`] for `f64`, with the roots of [`stable_roots`].
+pub(crate) fn into_f64_roots(c: Crossings<f64>, lo: f64) -> BisectorRoots<f64> {
+    match c {
+        Crossings::Quadratic {
+            eq2,
+            smaller,
+            larger,
+            ..
+        } => chosen(stable_roots(&eq2), smaller, larger, &lo),
+        other => into_roots(other, &lo),
+    }
+}
+
 /// The crossings as [`BisectorRoots`] in a [`Field`], positions back on the edge.
-pub(crate) fn into_roots<S: Field + CertifiedSign>(c: Crossings<S>, lo: &S) -> BisectorRoots<S> {
+pub(crate) fn into_roots<S: Field>(c: Crossings<S>, lo: &S) -> BisectorRoots<S> {
     match c {
         Crossings::None => BisectorRoots::None,
         Crossings::Infinite => BisectorRoots::Infinite,
         Crossings::At(u) => BisectorRoots::One(u + lo),
         Crossings::Quadratic {
             eq2,
+            sign_a,
             smaller,
             larger,
-        } => {
-            let positive = eq2.a.certified_sign() == Some(Sign::Positive);
-            let [r, s] = quadratic_roots(&eq2, positive);
-            match (smaller, larger) {
-                (true, true) => BisectorRoots::Two(r + lo, s + lo),
-                (true, false) => BisectorRoots::One(r + lo),
-                (false, true) => BisectorRoots::One(s + lo),
-                (false, false) => BisectorRoots::None,
-            }
-        }
+        } => chosen(quadratic_roots(&eq2, sign_a), smaller, larger, lo),
     }
 }

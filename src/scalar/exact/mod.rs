@@ -19,7 +19,9 @@ mod node;
 mod normal_form;
 mod refine;
 
-use super::audit::{self, DecisionCounts, Settled, Site};
+pub use super::audit::Certificate;
+
+use super::audit::{self, DecisionCounts, Site};
 use super::roots::{self, CertifiedSign};
 use super::{BisectorRoots, Field, Interval, Ring, Scalar, Sign, SourceDistance};
 use node::Node;
@@ -47,26 +49,6 @@ pub fn set_precision_cap(bits: u32) {
 /// The current precision cap, in bits.
 pub fn precision_cap() -> u32 {
     PRECISION_CAP.load(AtomicOrdering::Relaxed)
-}
-
-/// How the sign of a [`Real`] was established.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Certificate {
-    /// The `f64` interval filter excluded zero (or was the point zero).
-    Filter,
-    /// Exact rational evaluation or a refined interval excluded zero.
-    Refinement,
-    /// Proved zero: the enclosure fell below the separation bound, or by rational evaluation.
-    CertifiedZero,
-    /// Not established within the precision cap (bits reached); the sign given is zero.
-    Uncertified(u32),
-}
-
-impl Certificate {
-    /// Whether the sign is proved.
-    pub fn is_certified(self) -> bool {
-        !matches!(self, Certificate::Uncertified(_))
-    }
 }
 
 /// An exact real number: an expression DAG over rationals with `+ - * /` and `sqrt`.
@@ -164,13 +146,7 @@ impl Real {
     /// The sign, counted as a decision of the current run.
     fn decide(&self) -> Sign {
         let (sign, certificate) = self.certified_sign();
-        let settled = match certificate {
-            Certificate::Filter => Settled::Filter,
-            Certificate::Refinement => Settled::Refinement,
-            Certificate::CertifiedZero => Settled::CertifiedZero,
-            Certificate::Uncertified(precision) => Settled::Uncertified { precision },
-        };
-        audit::record(settled, || self.enclosure());
+        audit::record(certificate, || self.enclosure());
         sign
     }
 
@@ -259,11 +235,11 @@ impl Scalar for Real {
     fn compare(&self, other: &Self) -> Ordering {
         let (a, b) = (self.filter(), other.filter());
         if a.hi < b.lo {
-            audit::record(Settled::Filter, || [0.0; 2]);
+            audit::record(Certificate::Filter, || [0.0; 2]);
             return Ordering::Less;
         }
         if a.lo > b.hi {
-            audit::record(Settled::Filter, || [0.0; 2]);
+            audit::record(Certificate::Filter, || [0.0; 2]);
             return Ordering::Greater;
         }
         (self.clone() - other).decide().as_ordering()
