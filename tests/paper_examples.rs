@@ -381,7 +381,7 @@ fn segment_distance(x: [f64; 2], p: [f64; 2], q: [f64; 2]) -> f64 {
 #[test]
 fn subdivisions_cover_faces_and_are_star_shaped() {
     subdivision_properties(&example4_face20());
-    // Every face of Example 4 and a few of a random convex disc and of the L-shape.
+    // Every face of Example 4 and of the L-shape.
     let mesh = shapes::paper_example4();
     let field = field_from(&mesh, 2);
     for f in 0..mesh.face_count() {
