@@ -41,20 +41,54 @@ impl<S: Ring> Eq2Coefficients<S> {
     /// Eq. (2) for two wedges, with positions measured from `origin` on the edge (the engine
     /// passes the left end of the shared range, which keeps the f64 coefficients small).
     pub fn new(w1: &SourceDistance<S>, w2: &SourceDistance<S>, origin: &S) -> Self {
+        Eq2Terms::new(w1, w2, origin).coefficients()
+    }
+}
+
+/// The terms eq. (2) is built from, with positions measured from an origin on the edge.
+pub(crate) struct Eq2Terms<S> {
+    /// `x2` from the origin.
+    pub(crate) x2: S,
+    /// `alpha = x2 - x1`.
+    pub(crate) alpha: S,
+    /// `beta = sigma2 - sigma1`.
+    pub(crate) beta: S,
+    /// `beta^2`.
+    pub(crate) beta2: S,
+    /// `|s2|^2` from the origin.
+    pub(crate) n2: S,
+    /// `gamma = |s1|^2 - |s2|^2 - beta^2`.
+    pub(crate) gamma: S,
+}
+
+impl<S: Ring> Eq2Terms<S> {
+    pub(crate) fn new(w1: &SourceDistance<S>, w2: &SourceDistance<S>, origin: &S) -> Self {
         let x1 = w1.x.clone() - origin;
         let x2 = w2.x.clone() - origin;
-        let alpha = x2.clone() - &x1;
+        // From the inputs rather than from x1, x2: one rounding fewer for f64 filters.
+        let alpha = w2.x.clone() - &w1.x;
         let beta = w2.sigma.clone() - &w1.sigma;
         let beta2 = beta.clone() * &beta;
         let n1 = x1.clone() * &x1 + w1.y.clone() * &w1.y;
         let n2 = x2.clone() * &x2 + w2.y.clone() * &w2.y;
         let gamma = n1 - &n2 - &beta2;
+        Eq2Terms {
+            x2,
+            alpha,
+            beta,
+            beta2,
+            n2,
+            gamma,
+        }
+    }
+
+    pub(crate) fn coefficients(&self) -> Eq2Coefficients<S> {
         let two = S::from_f64(2.0);
         let quarter = S::from_f64(0.25);
         Eq2Coefficients {
-            a: alpha.clone() * &alpha - &beta2,
-            b: two * &x2 * &beta2 + alpha * &gamma,
-            c: quarter * &gamma * &gamma - n2 * &beta2,
+            a: self.alpha.clone() * &self.alpha - &self.beta2,
+            b: two * &self.x2 * &self.beta2 + self.alpha.clone() * &self.gamma,
+            c: quarter * &self.gamma * &self.gamma - self.n2.clone() * &self.beta2,
         }
     }
 }

@@ -39,7 +39,7 @@ mod interval;
 mod rational;
 mod roots;
 
-pub use adaptive::Adaptive;
+pub use adaptive::{Adaptive, Resolution};
 pub use audit::{Certificate, DecisionCounts, DecisionSite, Site};
 pub use bisector::{BisectorRoots, Eq2Case, Eq2Coefficients, SourceDistance};
 pub use exact::Real;

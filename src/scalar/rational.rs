@@ -1,15 +1,83 @@
 //! Exact rationals as a [`Ring`] with exact signs: the adaptive backend's exact stage, where
-//! every predicate is a polynomial in `f64` inputs (so no square root is needed).
+//! every predicate is a polynomial (or a ratio of polynomials) in `f64` inputs, so no square
+//! root is needed.
+//!
+//! The inputs are binary fractions, so a value is kept as `n 2^e / d` and never reduced:
+//! sums of binary fractions only shift, and a predicate is a few dozen operations, too few for
+//! the numbers to grow much. Reducing by gcds, as a canonical rational does after every
+//! operation, would cost more than the rest of the arithmetic.
 
 use super::roots::CertifiedSign;
 use super::{Ring, Sign};
-use rug::Rational;
+use rug::Integer;
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// An exact rational.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Q(pub(crate) Rational);
+/// An exact rational `n 2^e / d`, with `d > 0`; `d` stays 1 until a division.
+#[derive(Clone, Debug)]
+pub(crate) struct Q {
+    n: Integer,
+    e: i64,
+    d: Integer,
+}
+
+impl Q {
+    fn zero() -> Q {
+        Q {
+            n: Integer::new(),
+            e: 0,
+            d: Integer::from(1),
+        }
+    }
+
+    fn normalized(n: Integer, e: i64, d: Integer) -> Q {
+        if n.is_zero() {
+            Q::zero()
+        } else {
+            Q { n, e, d }
+        }
+    }
+
+    /// The nearest `f64` (for reports; exactness is in the sign).
+    pub(crate) fn to_f64(&self) -> f64 {
+        let (n, d) = (self.n.to_f64(), self.d.to_f64());
+        if n.is_finite() && d.is_finite() && d != 0.0 {
+            n / d * 2f64.powi(self.e.clamp(-2000, 2000) as i32)
+        } else {
+            rug::Rational::from((self.n.clone(), self.d.clone())).to_f64()
+                * 2f64.powi(self.e.clamp(-2000, 2000) as i32)
+        }
+    }
+
+    /// `self + sign * o`.
+    fn add_signed(self, o: &Q, negate: bool) -> Q {
+        if o.n.is_zero() {
+            return self;
+        }
+        if self.n.is_zero() {
+            return if negate { -o.clone() } else { o.clone() };
+        }
+        let e = self.e.min(o.e);
+        let one = self.d == 1 && o.d == 1;
+        let mut left = if one { self.n } else { self.n * &o.d };
+        left <<= (self.e - e) as u32;
+        let mut right = if one {
+            o.n.clone()
+        } else {
+            Integer::from(&o.n * &self.d)
+        };
+        right <<= (o.e - e) as u32;
+        let n = if negate { left - right } else { left + right };
+        let d = if one { self.d } else { self.d * &o.d };
+        Q::normalized(n, e, d)
+    }
+}
+
+impl PartialEq for Q {
+    fn eq(&self, other: &Q) -> bool {
+        (self.clone() - other).n.is_zero()
+    }
+}
 
 macro_rules! rational_ops {
     ($($tr:ident $f:ident),*) => {$(
@@ -26,21 +94,22 @@ rational_ops!(Add add, Sub sub, Mul mul, Div div);
 impl<'a> Add<&'a Q> for Q {
     type Output = Q;
     fn add(self, o: &'a Q) -> Q {
-        Q(self.0 + &o.0)
+        self.add_signed(o, false)
     }
 }
 
 impl<'a> Sub<&'a Q> for Q {
     type Output = Q;
     fn sub(self, o: &'a Q) -> Q {
-        Q(self.0 - &o.0)
+        self.add_signed(o, true)
     }
 }
 
 impl<'a> Mul<&'a Q> for Q {
     type Output = Q;
     fn mul(self, o: &'a Q) -> Q {
-        Q(self.0 * &o.0)
+        let d = if o.d == 1 { self.d } else { self.d * &o.d };
+        Q::normalized(self.n * &o.n, self.e + o.e, d)
     }
 }
 
@@ -49,33 +118,118 @@ impl<'a> Div<&'a Q> for Q {
     /// Division by zero, which the predicates never ask for (they test the divisor's sign
     /// first), gives zero rather than a panic.
     fn div(self, o: &'a Q) -> Q {
-        if o.0.is_zero() {
-            Q(Rational::new())
-        } else {
-            Q(self.0 / &o.0)
+        if o.n.is_zero() {
+            return Q::zero();
         }
+        let mut n = if o.d == 1 { self.n } else { self.n * &o.d };
+        let mut d = self.d * &o.n;
+        if d < 0 {
+            n = -n;
+            d = -d;
+        }
+        Q::normalized(n, self.e - o.e, d)
     }
 }
 
 impl Neg for Q {
     type Output = Q;
     fn neg(self) -> Q {
-        Q(-self.0)
+        Q { n: -self.n, ..self }
     }
 }
 
 impl Ring for Q {
+    /// Non-finite values, which the engine never passes, become zero.
     fn from_f64(x: f64) -> Self {
-        Q(Rational::from_f64(x).unwrap_or_default())
+        if !x.is_finite() || x == 0.0 {
+            return Q::zero();
+        }
+        // x = mantissa 2^exponent exactly, the mantissa an integer below 2^53.
+        let bits = x.to_bits();
+        let exponent = ((bits >> 52) & 0x7ff) as i64;
+        let fraction = bits & ((1u64 << 52) - 1);
+        let (mantissa, e) = if exponent == 0 {
+            (fraction, -1074)
+        } else {
+            (fraction | (1u64 << 52), exponent - 1075)
+        };
+        let n = Integer::from(mantissa);
+        Q {
+            n: if x < 0.0 { -n } else { n },
+            e,
+            d: Integer::from(1),
+        }
     }
 }
 
 impl CertifiedSign for Q {
     fn certified_sign(&self) -> Option<Sign> {
-        Some(match self.0.cmp0() {
+        Some(match self.n.cmp0() {
             Ordering::Less => Sign::Negative,
             Ordering::Equal => Sign::Zero,
             Ordering::Greater => Sign::Positive,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rug::Rational;
+
+    fn exact(q: &Q) -> Rational {
+        let mut r = Rational::from((q.n.clone(), q.d.clone()));
+        if q.e >= 0 {
+            r <<= q.e as u32;
+        } else {
+            r >>= (-q.e) as u32;
+        }
+        r
+    }
+
+    #[test]
+    fn values_are_exact_rationals() {
+        let xs = [0.1, -3.0, 1e-300, 5e-324, 7.25e10, -0.0];
+        for &x in &xs {
+            assert_eq!(exact(&Q::from_f64(x)), Rational::from_f64(x).unwrap());
+            for &y in &xs {
+                let (p, q) = (
+                    Rational::from_f64(x).unwrap(),
+                    Rational::from_f64(y).unwrap(),
+                );
+                let (a, b) = (Q::from_f64(x), Q::from_f64(y));
+                assert_eq!(exact(&(a.clone() + &b)), p.clone() + &q);
+                assert_eq!(exact(&(a.clone() - &b)), p.clone() - &q);
+                assert_eq!(exact(&(a.clone() * &b)), p.clone() * &q);
+                if y != 0.0 {
+                    let quotient = a.clone() / &b;
+                    assert_eq!(exact(&quotient), p.clone() / &q);
+                    // Through a division and back: (x / y) * y - x = 0 exactly.
+                    let back = quotient * &b - &a;
+                    assert_eq!(back.certified_sign(), Some(Sign::Zero));
+                    let seven = Q::from_f64(7.0);
+                    let mixed = a.clone() / &b + &(b.clone() / &seven);
+                    let expected = p.clone() / &q + q.clone() / Rational::from(7);
+                    assert_eq!(exact(&mixed), expected);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn signs_of_tiny_differences_are_exact() {
+        let one = Q::from_f64(1.0);
+        let tiny = Q::from_f64(f64::EPSILON) * &Q::from_f64(f64::EPSILON);
+        assert_eq!(
+            (one.clone() + &tiny - &one).certified_sign(),
+            Some(Sign::Positive)
+        );
+        assert_eq!(
+            (one.clone() - &tiny - &one).certified_sign(),
+            Some(Sign::Negative)
+        );
+        let third = Q::from_f64(1.0) / &Q::from_f64(3.0);
+        let sum = third.clone() + &third + &third - &one;
+        assert_eq!(sum.certified_sign(), Some(Sign::Zero));
     }
 }

@@ -12,6 +12,7 @@
 //! both or right of both. So an exact rational type suffices, and the adaptive backend's exact
 //! stage needs no square roots.
 
+use super::bisector::Eq2Terms;
 use super::{BisectorRoots, Eq2Coefficients, Field, Ring, Sign, SourceDistance};
 
 /// A number type that may know the exact sign of a value: `None` means "cannot tell" (a filter
@@ -62,6 +63,32 @@ impl<T> Crossings<T> {
     }
 }
 
+/// The gap of two pseudo-sources, `|s2 - s1|^2 - (sigma2 - sigma1)^2`, with `s2` mirrored
+/// across the edge's line if `mirror`: how far the triangle inequality
+/// `|sigma2 - sigma1| <= |s1 s2|` is from equality. Eq. (2)'s discriminant factors as
+/// `B^2 - 4AC = beta^2 G G'` (`G` the gap, `G'` the mirrored one), so a double root, where one
+/// distance function touches the other without crossing it, is a zero gap: a pseudo-source seen
+/// straight from the other one. Built from differences of the inputs, so that a backend whose
+/// inputs are `f64` can decide its sign exactly at little cost.
+pub(crate) fn source_gap<T: Ring>(a: &SourceDistance<T>, b: &SourceDistance<T>, mirror: bool) -> T {
+    let dx = b.x.clone() - &a.x;
+    let dy = if mirror {
+        b.y.clone() + &a.y
+    } else {
+        b.y.clone() - &a.y
+    };
+    let ds = b.sigma.clone() - &a.sigma;
+    dx.clone() * &dx + dy.clone() * &dy - ds.clone() * &ds
+}
+
+/// The sign of [`source_gap`], decided in `T`.
+pub(crate) fn gap_in<'a, T: CertifiedSign>(
+    a: &'a SourceDistance<T>,
+    b: &'a SourceDistance<T>,
+) -> impl Fn(bool) -> Option<Sign> + 'a {
+    move |mirror| source_gap(a, b, mirror).certified_sign()
+}
+
 /// Whether two wedges have the same distance function: `A = B = C = 0` in eq. (2).
 pub(crate) fn same_distance_function<T: CertifiedSign>(
     a: &SourceDistance<T>,
@@ -95,18 +122,31 @@ impl<T: CertifiedSign> TwoRoots<'_, T> {
     fn root_minus(&self, larger: bool, p: &T) -> Option<Sign> {
         let e = self.eq2;
         let at_p = e.a.clone() * p * p + &(e.b.clone() * p) + &e.c;
-        let between = at_p.certified_sign()?.times(self.sa);
-        let two = T::from_f64(2.0);
+        self.root_minus_given(larger, at_p.certified_sign()?, || {
+            (T::from_f64(2.0) * &e.a * p + &e.b).certified_sign()
+        })
+    }
+
+    /// [`Self::root_minus`] from the signs of `P(p)` and of the slope `P'(p)`, the slope asked
+    /// only if needed.
+    fn root_minus_given(
+        &self,
+        larger: bool,
+        at_p: Sign,
+        slope: impl FnOnce() -> Option<Sign>,
+    ) -> Option<Sign> {
+        let between = at_p.times(self.sa);
+        if between == Sign::Negative {
+            return Some(if larger {
+                Sign::Positive
+            } else {
+                Sign::Negative
+            });
+        }
         // The sign of p minus the vertex -B / (2A).
-        let side = (two * &e.a * p + &e.b).certified_sign()?.times(self.sa);
+        let side = slope()?.times(self.sa);
         Some(match (between, side) {
-            (Sign::Negative, _) => {
-                if larger {
-                    Sign::Positive
-                } else {
-                    Sign::Negative
-                }
-            }
+            (Sign::Negative, _) => unreachable!("decided above"),
             (Sign::Positive, s) => negate(s),
             // p is a root: the smaller one if it is left of the vertex.
             (Sign::Zero, s) => match (s == Sign::Negative, larger) {
@@ -131,27 +171,42 @@ impl<T: CertifiedSign> TwoRoots<'_, T> {
 
 /// The solutions of eq. (1) strictly inside `(lo, hi)`, every decision an exact sign of a
 /// polynomial in the inputs; `None` when `T` cannot tell one of them.
+///
+/// `gap(mirror)` is the sign of [`source_gap`]; a backend may decide it from its inputs more
+/// cheaply than `T` can (pass [`gap_in`] to decide it in `T`).
 pub(crate) fn crossings<T: CertifiedSign>(
     a: &SourceDistance<T>,
     b: &SourceDistance<T>,
     lo: &T,
     hi: &T,
+    gap: impl Fn(bool) -> Option<Sign>,
 ) -> Option<Crossings<T>> {
-    let eq2 = Eq2Coefficients::new(a, b, lo);
-    let (sa, sb) = (eq2.a.certified_sign()?, eq2.b.certified_sign()?);
-    // C is often nearly zero (the range starts where the wedges are nearly equal), so its sign
-    // is asked only where it decides.
+    let terms = Eq2Terms::new(a, b, lo);
+    let eq2 = terms.coefficients();
+    let Eq2Terms {
+        x2,
+        alpha,
+        beta,
+        beta2,
+        n2,
+        gamma,
+    } = terms;
+    // A = (alpha - beta)(alpha + beta): each factor is a sum of the inputs, so its sign is
+    // certain unless it nearly vanishes (Example 2's configuration).
+    let sa = (alpha.clone() - &beta)
+        .certified_sign()?
+        .times((alpha.clone() + &beta).certified_sign()?);
+    // B is asked only when A = 0, C only for A = B = 0: C is often nearly zero (the range
+    // starts where the wedges are nearly equal).
+    let sb = match sa {
+        Sign::Zero => eq2.b.certified_sign()?,
+        _ => Sign::Positive,
+    };
     if (sa, sb) == (Sign::Zero, Sign::Zero) && eq2.c.certified_sign()? == Sign::Zero {
         return Some(Crossings::Infinite);
     }
-    let (x1, x2) = (a.x.clone() - lo, b.x.clone() - lo);
-    let alpha = x2.clone() - &x1;
-    let beta = b.sigma.clone() - &a.sigma;
     let sbeta = beta.certified_sign()?;
-    let beta2 = beta.clone() * &beta;
-    let n1 = x1.clone() * &x1 + a.y.clone() * &a.y;
-    let n2 = x2.clone() * &x2 + b.y.clone() * &b.y;
-    let gamma = n1 - &n2 - &beta2;
+    let alpha_sign = alpha.certified_sign()?;
     let two = T::from_f64(2.0);
     let width = hi.clone() - lo;
     // q2(u) - beta^2 = u^2 - 2 x2 u + (n2 - beta^2).
@@ -179,7 +234,7 @@ pub(crate) fn crossings<T: CertifiedSign>(
     };
     if sbeta == Sign::Zero {
         // Equal sigmas: eq. (1) is linear, L(t) = 0 (eq. (2) is its square, a double root).
-        return match alpha.certified_sign()? {
+        return match alpha_sign {
             Sign::Zero => Some(Crossings::None),
             _ => single(-(gamma.clone() / &(two.clone() * &alpha))),
         };
@@ -190,8 +245,14 @@ pub(crate) fn crossings<T: CertifiedSign>(
             _ => single(-(eq2.c.clone() / &eq2.b)),
         };
     }
-    let disc = eq2.b.clone() * &eq2.b - two.clone() * &two * &eq2.a * &eq2.c;
-    match disc.certified_sign()? {
+    // B^2 - 4AC = beta^2 G G' (the source gaps), beta != 0 here. The gap with s2 on s1's side
+    // of the line is the smaller (they differ by 4 |y1 y2|): if it is positive, so is the other.
+    let opposite = a.y.certified_sign()?.times(b.y.certified_sign()?) == Sign::Negative;
+    let disc = match gap(opposite)? {
+        Sign::Negative => negate(gap(!opposite)?),
+        near => near,
+    };
+    match disc {
         Sign::Negative => return Some(Crossings::None),
         Sign::Zero => return single(-(eq2.b.clone() / &(two.clone() * &eq2.a))),
         Sign::Positive => {}
@@ -202,9 +263,25 @@ pub(crate) fn crossings<T: CertifiedSign>(
     let m_q = -(two.clone() * &x2) - &(eq2.b.clone() / &eq2.a);
     let c_q = q2_excess.clone() - &(eq2.c.clone() / &eq2.a);
     let two_alpha = two.clone() * &alpha;
+    // At the foot of a pseudo-source on the edge's line (a vertex's wedge along its edge), P is
+    // (G / 2)^2 and its slope -+alpha G, G the gap. A range that starts or ends at such a
+    // vertex, where the other wedge gives the vertex its distance, has a near-double root of P
+    // there, which no filter can place; the gap's sign can.
+    let at_end = |larger: bool, end: &T, from_lo: &T| -> Option<Sign> {
+        for (s, slope) in [(a, negate(alpha_sign)), (b, alpha_sign)] {
+            if s.y.certified_sign()? == Sign::Zero
+                && (s.x.clone() - end).certified_sign()? == Sign::Zero
+            {
+                let g = gap(false)?;
+                let at_foot = g.times(g);
+                return roots.root_minus_given(larger, at_foot, || Some(slope.times(g)));
+            }
+        }
+        roots.root_minus(larger, from_lo)
+    };
     let solves = |larger: bool| -> Option<bool> {
-        if roots.root_minus(larger, &zero)? != Sign::Positive
-            || roots.root_minus(larger, &width)? != Sign::Negative
+        if at_end(larger, lo, &zero)? != Sign::Positive
+            || at_end(larger, hi, &width)? != Sign::Negative
         {
             return Some(false);
         }
@@ -288,5 +365,61 @@ pub(crate) fn into_roots<S: Field>(c: Crossings<S>, lo: &S) -> BisectorRoots<S> 
             smaller,
             larger,
         } => chosen(quadratic_roots(&eq2, sign_a), smaller, larger, lo),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::rational::Q;
+    use super::*;
+    use proptest::prelude::*;
+
+    fn source(x: f64, y: f64, sigma: f64) -> SourceDistance<Q> {
+        SourceDistance {
+            x: Q::from_f64(x),
+            y: Q::from_f64(y),
+            sigma: Q::from_f64(sigma),
+        }
+    }
+
+    proptest! {
+        /// `B^2 - 4AC = beta^2 G G'`, exactly, whatever the sides of the pseudo-sources.
+        #[test]
+        fn the_discriminant_is_beta_squared_times_the_gaps(
+            x1 in -2.0..2.0f64, y1 in -2.0..2.0f64, s1 in 0.0..3.0f64,
+            x2 in -2.0..2.0f64, y2 in -2.0..2.0f64, s2 in 0.0..3.0f64, lo in -1.0..1.0f64,
+        ) {
+            let (a, b) = (source(x1, y1, s1), source(x2, y2, s2));
+            let e = Eq2Coefficients::new(&a, &b, &Q::from_f64(lo));
+            let disc = e.b.clone() * &e.b - Q::from_f64(4.0) * &e.a * &e.c;
+            let beta = b.sigma.clone() - &a.sigma;
+            let factored =
+                beta.clone() * &beta * &source_gap(&a, &b, false) * &source_gap(&a, &b, true);
+            prop_assert_eq!((disc - &factored).certified_sign(), Some(Sign::Zero));
+        }
+
+        /// At the foot of a pseudo-source on the edge's line, `P = (G / 2)^2` and
+        /// `P' = -+alpha G` (minus for the first wedge's foot, plus for the second's).
+        #[test]
+        fn at_a_foot_p_is_the_squared_gap(
+            x1 in -2.0..2.0f64, y1 in -2.0..2.0f64, s1 in 0.0..3.0f64,
+            x2 in -2.0..2.0f64, s2 in 0.0..3.0f64, lo in -1.0..1.0f64, first in any::<bool>(),
+        ) {
+            let (a, b) = if first {
+                (source(x2, 0.0, s2), source(x1, y1, s1))
+            } else {
+                (source(x1, y1, s1), source(x2, 0.0, s2))
+            };
+            let e = Eq2Coefficients::new(&a, &b, &Q::from_f64(lo));
+            let foot = Q::from_f64(x2) - &Q::from_f64(lo);
+            let p = e.a.clone() * &foot * &foot + &(e.b.clone() * &foot) + &e.c;
+            let slope = Q::from_f64(2.0) * &e.a * &foot + &e.b;
+            let g = source_gap(&a, &b, false);
+            let alpha_g = (b.x.clone() - &a.x) * &g;
+            let expected_slope = if first { -alpha_g } else { alpha_g };
+            let quarter = Q::from_f64(0.25);
+            prop_assert_eq!((p - &(quarter * &g * &g)).certified_sign(), Some(Sign::Zero));
+            prop_assert_eq!((slope - &expected_slope).certified_sign(), Some(Sign::Zero));
+        }
     }
 }

@@ -271,8 +271,8 @@ impl Scalar for Real {
         lo: &Self,
         hi: &Self,
     ) -> BisectorRoots<Self> {
-        let crossings =
-            roots::crossings(a, b, lo, hi).expect("the exact backend decides every sign");
+        let crossings = roots::crossings(a, b, lo, hi, roots::gap_in(a, b))
+            .expect("the exact backend decides every sign");
         roots::into_roots(crossings, lo)
     }
 
