@@ -19,7 +19,7 @@
 //! The filter and exact-stage counts of the predicates are reported per run; comparisons of
 //! stored values are exact by themselves and not counted.
 
-use super::audit::{self, Certificate, DecisionCounts, Site};
+use super::audit::{self, Certificate, DecisionCounts};
 use super::double_double::DoubleDouble;
 use super::error_bound::ErrorBound;
 use super::rational::Q;
@@ -103,6 +103,50 @@ fn lift<T: Ring>(d: &SourceDistance<Adaptive>) -> SourceDistance<T> {
         x: T::from_f64(d.x.0),
         y: T::from_f64(d.y.0),
         sigma: T::from_f64(d.sigma.0),
+    }
+}
+
+/// The signs [`roots::crossings`] may ask apart from the rest when a filter cannot tell them,
+/// each decided exactly through its own filters, and once for all stages.
+struct Signs<'a> {
+    a: &'a SourceDistance<Adaptive>,
+    b: &'a SourceDistance<Adaptive>,
+    ends: [f64; 2],
+    /// The gaps (same side, mirrored), then `P` at the start and at the end.
+    known: Cell<[Option<Sign>; 4]>,
+}
+
+impl Signs<'_> {
+    fn decide<T: CertifiedSign>(&self, at: usize) -> Option<Sign> {
+        let (a, b) = (lift::<T>(self.a), lift::<T>(self.b));
+        match at {
+            0 | 1 => roots::source_gap(&a, &b, at == 1),
+            _ => roots::eq2_at(&a, &b, &T::from_f64(self.ends[at - 2])),
+        }
+        .certified_sign()
+    }
+
+    fn sign(&self, at: usize) -> Option<Sign> {
+        let mut known = self.known.get();
+        let sign = *known[at].get_or_insert_with(|| {
+            filtered(
+                || self.decide::<ErrorBound>(at),
+                || self.decide::<DoubleDouble>(at),
+                || self.decide::<Q>(at),
+            )
+        });
+        self.known.set(known);
+        Some(sign)
+    }
+}
+
+impl roots::InputSigns for Signs<'_> {
+    fn gap(&self, mirror: bool) -> Option<Sign> {
+        self.sign(mirror as usize)
+    }
+
+    fn at_end(&self, end: bool) -> Option<Sign> {
+        self.sign(2 + end as usize)
     }
 }
 
@@ -200,36 +244,27 @@ impl Scalar for Adaptive {
         lo: &Self,
         hi: &Self,
     ) -> BisectorRoots<Self> {
-        // The discriminant's sign is the gaps' (a double root is a zero gap), decided on its
-        // own and once for all stages.
-        let known: Cell<[Option<Sign>; 2]> = Cell::new([None; 2]);
-        let gap = |mirror: bool| {
-            let mut signs = known.get();
-            let sign = *signs[mirror as usize].get_or_insert_with(|| {
-                filtered(
-                    || roots::source_gap::<ErrorBound>(&lift(a), &lift(b), mirror).certified_sign(),
-                    || {
-                        roots::source_gap::<DoubleDouble>(&lift(a), &lift(b), mirror)
-                            .certified_sign()
-                    },
-                    || roots::source_gap::<Q>(&lift(a), &lift(b), mirror).certified_sign(),
-                )
-            });
-            known.set(signs);
-            Some(sign)
+        let signs = Signs {
+            a,
+            b,
+            ends: [lo.0, hi.0],
+            known: Cell::new([None; 4]),
         };
         let crossings = filtered(
             || {
                 let (lo, hi) = (ErrorBound::from_f64(lo.0), ErrorBound::from_f64(hi.0));
-                roots::crossings(&lift(a), &lift(b), &lo, &hi, gap).map(|c| c.map(|x| x.to_f64()))
+                roots::crossings(&lift(a), &lift(b), &lo, &hi, &signs)
+                    .map(|c| c.map(|x| x.to_f64()))
             },
             || {
                 let (lo, hi) = (DoubleDouble::from_f64(lo.0), DoubleDouble::from_f64(hi.0));
-                roots::crossings(&lift(a), &lift(b), &lo, &hi, gap).map(|c| c.map(|x| x.to_f64()))
+                roots::crossings(&lift(a), &lift(b), &lo, &hi, &signs)
+                    .map(|c| c.map(|x| x.to_f64()))
             },
             || {
                 let (lo, hi) = (Q::from_f64(lo.0), Q::from_f64(hi.0));
-                roots::crossings(&lift(a), &lift(b), &lo, &hi, gap).map(|c| c.map(|x| x.to_f64()))
+                roots::crossings(&lift(a), &lift(b), &lo, &hi, &signs)
+                    .map(|c| c.map(|x| x.to_f64()))
             },
         );
         roots::into_f64_roots(crossings, lo.0).map(Adaptive)
@@ -242,10 +277,6 @@ impl Scalar for Adaptive {
             y: p[1].0,
         };
         sign_of(robust::orient2d(c(p), c(q), c(r)))
-    }
-
-    fn locate(site: Site) {
-        audit::locate(site);
     }
 
     fn take_counts() -> DecisionCounts {

@@ -82,13 +82,17 @@ impl<S: Ring> Eq2Terms<S> {
         }
     }
 
+    /// `C`, the value of eq. (2)'s `P` at the origin.
+    pub(crate) fn constant(&self) -> S {
+        S::from_f64(0.25) * &self.gamma * &self.gamma - self.n2.clone() * &self.beta2
+    }
+
     pub(crate) fn coefficients(&self) -> Eq2Coefficients<S> {
         let two = S::from_f64(2.0);
-        let quarter = S::from_f64(0.25);
         Eq2Coefficients {
             a: self.alpha.clone() * &self.alpha - &self.beta2,
             b: two * &self.x2 * &self.beta2 + self.alpha.clone() * &self.gamma,
-            c: quarter * &self.gamma * &self.gamma - self.n2.clone() * &self.beta2,
+            c: self.constant(),
         }
     }
 }

@@ -49,7 +49,7 @@ impl Q {
         }
     }
 
-    /// `self + sign * o`.
+    /// `self + o`, or `self - o` if `negate`.
     fn add_signed(self, o: &Q, negate: bool) -> Q {
         if o.n.is_zero() {
             return self;
@@ -57,18 +57,31 @@ impl Q {
         if self.n.is_zero() {
             return if negate { -o.clone() } else { o.clone() };
         }
-        let e = self.e.min(o.e);
-        let one = self.d == 1 && o.d == 1;
-        let mut left = if one { self.n } else { self.n * &o.d };
-        left <<= (self.e - e) as u32;
-        let mut right = if one {
-            o.n.clone()
+        // Over the common denominator, and with the smaller exponent: only the operand with
+        // the larger exponent is shifted, into one allocation of the right size.
+        let (mut n, right, d) = if self.d == 1 && o.d == 1 {
+            (self.n, Integer::new(), self.d)
         } else {
-            Integer::from(&o.n * &self.d)
+            let right = Integer::from(&o.n * &self.d);
+            (self.n * &o.d, right, self.d * &o.d)
         };
-        right <<= (o.e - e) as u32;
-        let n = if negate { left - right } else { left + right };
-        let d = if one { self.d } else { self.d * &o.d };
+        let right = if o.d == 1 && d == 1 { &o.n } else { &right };
+        let e = self.e.min(o.e);
+        if self.e > e {
+            n = Integer::from(&n << (self.e - e) as u32);
+        }
+        if o.e > e {
+            let shifted = Integer::from(right << (o.e - e) as u32);
+            if negate {
+                n -= shifted;
+            } else {
+                n += shifted;
+            }
+        } else if negate {
+            n -= right;
+        } else {
+            n += right;
+        }
         Q::normalized(n, e, d)
     }
 }

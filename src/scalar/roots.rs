@@ -81,12 +81,35 @@ pub(crate) fn source_gap<T: Ring>(a: &SourceDistance<T>, b: &SourceDistance<T>, 
     dx.clone() * &dx + dy.clone() * &dy - ds.clone() * &ds
 }
 
-/// The sign of [`source_gap`], decided in `T`.
-pub(crate) fn gap_in<'a, T: CertifiedSign>(
-    a: &'a SourceDistance<T>,
-    b: &'a SourceDistance<T>,
-) -> impl Fn(bool) -> Option<Sign> + 'a {
-    move |mirror| source_gap(a, b, mirror).certified_sign()
+/// Eq. (2)'s `P` at `origin`: its constant term `C` with positions measured from there.
+pub(crate) fn eq2_at<T: Ring>(a: &SourceDistance<T>, b: &SourceDistance<T>, origin: &T) -> T {
+    Eq2Terms::new(a, b, origin).constant()
+}
+
+/// Signs that depend on the two wedges and the ends of their shared range only, which a
+/// backend may decide apart from the rest of [`crossings`] when the filter's number type cannot:
+/// they are the ones near-degenerate meetings make hard, and deciding them alone is far cheaper
+/// than deciding the whole meeting again at a finer stage. `None`: not decided apart.
+pub(crate) trait InputSigns {
+    /// The sign of [`source_gap`].
+    fn gap(&self, mirror: bool) -> Option<Sign>;
+
+    /// The sign of eq. (2)'s `P` at the start (`false`) or end (`true`) of the range
+    /// ([`eq2_at`]): near zero when the range starts where the two wedges already cross.
+    fn at_end(&self, end: bool) -> Option<Sign>;
+}
+
+/// No sign decided apart: the number type decides every sign itself.
+pub(crate) struct InT;
+
+impl InputSigns for InT {
+    fn gap(&self, _mirror: bool) -> Option<Sign> {
+        None
+    }
+
+    fn at_end(&self, _end: bool) -> Option<Sign> {
+        None
+    }
 }
 
 /// Whether two wedges have the same distance function: `A = B = C = 0` in eq. (2).
@@ -172,15 +195,20 @@ impl<T: CertifiedSign> TwoRoots<'_, T> {
 /// The solutions of eq. (1) strictly inside `(lo, hi)`, every decision an exact sign of a
 /// polynomial in the inputs; `None` when `T` cannot tell one of them.
 ///
-/// `gap(mirror)` is the sign of [`source_gap`]; a backend may decide it from its inputs more
-/// cheaply than `T` can (pass [`gap_in`] to decide it in `T`).
+/// `signs` decides the signs that depend on the inputs only where `T` cannot ([`InT`]: `T`
+/// decides every sign).
 pub(crate) fn crossings<T: CertifiedSign>(
     a: &SourceDistance<T>,
     b: &SourceDistance<T>,
     lo: &T,
     hi: &T,
-    gap: impl Fn(bool) -> Option<Sign>,
+    signs: &impl InputSigns,
 ) -> Option<Crossings<T>> {
+    let gap = |mirror| {
+        source_gap(a, b, mirror)
+            .certified_sign()
+            .or_else(|| signs.gap(mirror))
+    };
     let terms = Eq2Terms::new(a, b, lo);
     let eq2 = terms.coefficients();
     let Eq2Terms {
@@ -267,7 +295,7 @@ pub(crate) fn crossings<T: CertifiedSign>(
     // (G / 2)^2 and its slope -+alpha G, G the gap. A range that starts or ends at such a
     // vertex, where the other wedge gives the vertex its distance, has a near-double root of P
     // there, which no filter can place; the gap's sign can.
-    let at_end = |larger: bool, end: &T, from_lo: &T| -> Option<Sign> {
+    let at_end = |larger: bool, end: &T, from_lo: &T, is_hi: bool| -> Option<Sign> {
         for (s, slope) in [(a, negate(alpha_sign)), (b, alpha_sign)] {
             if s.y.certified_sign()? == Sign::Zero
                 && (s.x.clone() - end).certified_sign()? == Sign::Zero
@@ -277,15 +305,32 @@ pub(crate) fn crossings<T: CertifiedSign>(
                 return roots.root_minus_given(larger, at_foot, || Some(slope.times(g)));
             }
         }
-        roots.root_minus(larger, from_lo)
+        let slope = || (two.clone() * &eq2.a * from_lo + &eq2.b).certified_sign();
+        let value = eq2.a.clone() * from_lo * from_lo + &(eq2.b.clone() * from_lo) + &eq2.c;
+        let at_p = value.certified_sign().or_else(|| signs.at_end(is_hi))?;
+        roots.root_minus_given(larger, at_p, slope)
     };
     let solves = |larger: bool| -> Option<bool> {
-        if at_end(larger, lo, &zero)? != Sign::Positive
-            || at_end(larger, hi, &width)? != Sign::Negative
+        if at_end(larger, lo, &zero, false)? != Sign::Positive
+            || at_end(larger, hi, &width, true)? != Sign::Negative
         {
             return Some(false);
         }
-        let sl = roots.linear_at(larger, &two_alpha, &gamma)?;
+        let sl = match alpha_sign {
+            Sign::Zero => gamma.certified_sign()?,
+            sm => {
+                // At L's zero p, P(p) = -beta^2 q2(p): negative, or zero where p is the foot
+                // of a pseudo-source on the line and the gap is zero. Known without P(p),
+                // which a near-tangency puts beyond any filter.
+                let at_p = match (b.y.certified_sign()?, gap(false)?) {
+                    (Sign::Zero, Sign::Zero) => Sign::Zero,
+                    _ => Sign::Negative,
+                };
+                let p = -(gamma.clone() / &two_alpha);
+                let slope = || (two.clone() * &eq2.a * &p + &eq2.b).certified_sign();
+                roots.root_minus_given(larger, at_p, slope)?.times(sm)
+            }
+        };
         if sl != Sign::Zero && sl != sbeta {
             return Some(false);
         }
@@ -396,6 +441,24 @@ mod tests {
             let factored =
                 beta.clone() * &beta * &source_gap(&a, &b, false) * &source_gap(&a, &b, true);
             prop_assert_eq!((disc - &factored).certified_sign(), Some(Sign::Zero));
+        }
+
+        /// Where `L(t) = 2 alpha t + gamma` vanishes, `P = -beta^2 q2`.
+        #[test]
+        fn at_the_zero_of_l_p_is_minus_beta_squared_q2(
+            x1 in -2.0..2.0f64, y1 in -2.0..2.0f64, s1 in 0.0..3.0f64,
+            x2 in -2.0..2.0f64, y2 in -2.0..2.0f64, s2 in 0.0..3.0f64, lo in -1.0..1.0f64,
+        ) {
+            let (a, b) = (source(x1, y1, s1), source(x2, y2, s2));
+            let terms = Eq2Terms::new(&a, &b, &Q::from_f64(lo));
+            prop_assume!(terms.alpha.certified_sign() != Some(Sign::Zero));
+            let e = terms.coefficients();
+            let p = -(terms.gamma.clone() / &(Q::from_f64(2.0) * &terms.alpha));
+            let at_p = e.a.clone() * &p * &p + &(e.b.clone() * &p) + &e.c;
+            let dx = p - &terms.x2;
+            let q2 = dx.clone() * &dx + &(b.y.clone() * &b.y);
+            let expected = -(terms.beta2.clone() * &q2);
+            prop_assert_eq!((at_p - &expected).certified_sign(), Some(Sign::Zero));
         }
 
         /// At the foot of a pseudo-source on the edge's line, `P = (G / 2)^2` and

@@ -271,7 +271,7 @@ impl Scalar for Real {
         lo: &Self,
         hi: &Self,
     ) -> BisectorRoots<Self> {
-        let crossings = roots::crossings(a, b, lo, hi, roots::gap_in(a, b))
+        let crossings = roots::crossings(a, b, lo, hi, &roots::InT)
             .expect("the exact backend decides every sign");
         roots::into_roots(crossings, lo)
     }
