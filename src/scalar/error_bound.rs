@@ -24,16 +24,13 @@ pub(crate) struct ErrorBound {
 }
 
 impl ErrorBound {
+    /// No check for overflow here: an infinite or NaN value or bound makes every comparison in
+    /// [`CertifiedSign::certified_sign`] fail, so it can only answer "cannot tell".
     #[inline(always)]
     fn new(value: f64, propagated: f64) -> ErrorBound {
-        let error = (propagated + ROUNDING * value.abs()) * SLACK;
-        if value.is_finite() && !error.is_nan() {
-            ErrorBound { value, error }
-        } else {
-            ErrorBound {
-                value: 0.0,
-                error: f64::INFINITY,
-            }
+        ErrorBound {
+            value,
+            error: (propagated + ROUNDING * value.abs()) * SLACK,
         }
     }
 }
@@ -130,6 +127,7 @@ impl Field for ErrorBound {
 impl CertifiedSign for ErrorBound {
     #[inline(always)]
     fn certified_sign(&self) -> Option<Sign> {
+        // An overflowed value has an infinite bound (or is NaN): no comparison holds.
         if self.value > self.error {
             Some(Sign::Positive)
         } else if -self.value > self.error {
@@ -153,6 +151,9 @@ mod tests {
         let third = ErrorBound::from_f64(1.0) / ErrorBound::from_f64(3.0);
         let back = third * ErrorBound::from_f64(3.0) - ErrorBound::from_f64(1.0);
         assert_eq!(back.certified_sign(), None);
+        let huge = ErrorBound::from_f64(1e300);
+        assert_eq!((huge * huge).certified_sign(), None);
+        assert_eq!((huge * huge - huge * huge).certified_sign(), None);
         let r = ErrorBound::from_f64(2.0).sqrt();
         assert!((r.value - std::f64::consts::SQRT_2).abs() <= r.error.max(f64::EPSILON));
         assert_eq!(
