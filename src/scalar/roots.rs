@@ -227,10 +227,10 @@ pub(crate) fn crossings<T: CertifiedSign>(
     // B is asked only when A = 0, C only for A = B = 0: C is often nearly zero (the range
     // starts where the wedges are nearly equal).
     let sb = match sa {
-        Sign::Zero => eq2.b.certified_sign()?,
-        _ => Sign::Positive,
+        Sign::Zero => Some(eq2.b.certified_sign()?),
+        _ => None,
     };
-    if (sa, sb) == (Sign::Zero, Sign::Zero) && eq2.c.certified_sign()? == Sign::Zero {
+    if sb == Some(Sign::Zero) && eq2.c.certified_sign()? == Sign::Zero {
         return Some(Crossings::Infinite);
     }
     let sbeta = beta.certified_sign()?;
@@ -267,11 +267,10 @@ pub(crate) fn crossings<T: CertifiedSign>(
             _ => single(-(gamma.clone() / &(two.clone() * &alpha))),
         };
     }
-    if sa == Sign::Zero {
-        return match sb {
-            Sign::Zero => Some(Crossings::None),
-            _ => single(-(eq2.c.clone() / &eq2.b)),
-        };
+    match sb {
+        Some(Sign::Zero) => return Some(Crossings::None),
+        Some(_) => return single(-(eq2.c.clone() / &eq2.b)),
+        None => {}
     }
     // B^2 - 4AC = beta^2 G G' (the source gaps), beta != 0 here. The gap with s2 on s1's side
     // of the line is the smaller (they differ by 4 |y1 y2|): if it is positive, so is the other.
