@@ -310,3 +310,21 @@ fn adaptive_keeps_no_wedges_below_the_resolution_of_its_constructions() {
     assert!(coverage.largest_gap_fraction(&a) < 1e-10);
     assert_eq!(a.stats().backend.uncertified, 0);
 }
+
+/// Inputs near the bottom of the `f64` range: products underflow, so the filters must not take
+/// a flushed zero for an exact one, and the exact stage must convert its root back without
+/// overflow or underflow (this meeting once gave a NaN crossing).
+#[test]
+fn adaptive_decides_meetings_with_underflowing_products() {
+    use exact_geodesics::scalar::SourceDistance;
+    let wedge = |x: f64, y: f64, sigma: f64| SourceDistance {
+        x: Adaptive(x),
+        y: Adaptive(y),
+        sigma: Adaptive(sigma),
+    };
+    let (a, b) = (wedge(0.0, 7.5e-161, 1.25), wedge(1.5, 0.0, 0.75));
+    match Adaptive::bisector_roots(&a, &b, &Adaptive(0.0), &Adaptive(0.75)) {
+        BisectorRoots::One(r) => assert!((r.0 - 0.5).abs() < 1e-15, "{r:?}"),
+        other => panic!("expected one crossing near 0.5, got {other:?}"),
+    }
+}

@@ -29,8 +29,8 @@ use std::cell::Cell;
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// The resolution of the adaptive backend's constructed values, in units of `f64::EPSILON`
-/// (`2^-52`) relative to the quantity at hand. Exact comparisons of rounded constructions
+/// The resolution of the adaptive backend's constructed values, relative to the quantity at
+/// hand (a distance, an edge's length). Exact comparisons of rounded constructions
 /// (a vertex's distance against the same distance recomputed through another edge, two rays
 /// that should meet an edge at one point) leave ulp-wide wedges and gaps that carry nothing;
 /// on stanford_bunny they made a quarter of all wedges.

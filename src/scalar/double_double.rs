@@ -15,6 +15,9 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 /// The relative error charged to each operation.
 const ROUNDING: f64 = 1.0 / (1u128 << 96) as f64;
 
+/// The absolute error charged to a product or quotient for what underflow may lose.
+const UNDERFLOW: f64 = f64::MIN_POSITIVE;
+
 /// Covers the roundings made while computing a bound.
 const SLACK: f64 = 1.0 + 8.0 * f64::EPSILON;
 
@@ -128,7 +131,8 @@ impl Mul for DoubleDouble {
         let own = if self.lo == 0.0 && o.lo == 0.0 && no_underflow {
             0.0
         } else {
-            ROUNDING * ma * mb
+            // Near underflow the parts lose absolute bits the relative charge does not cover.
+            ROUNDING * ma * mb + UNDERFLOW
         };
         DoubleDouble::new(p, e, propagated + own)
     }
@@ -150,7 +154,11 @@ impl Div for DoubleDouble {
         let q2 = r / o.hi;
         let propagated =
             (ma * o.error + mb * self.error) / (mb * margin * (1.0 - 8.0 * f64::EPSILON));
-        DoubleDouble::new(q1, q2, propagated + ROUNDING * 4.0 * (ma / margin))
+        DoubleDouble::new(
+            q1,
+            q2,
+            propagated + ROUNDING * 4.0 * (ma / margin) + UNDERFLOW,
+        )
     }
 }
 

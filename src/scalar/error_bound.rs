@@ -16,6 +16,17 @@ const ROUNDING: f64 = f64::EPSILON;
 /// Covers the roundings made while computing a bound (a few, each at most `1 + 2^-53`).
 const SLACK: f64 = 1.0 + 4.0 * f64::EPSILON;
 
+/// The absolute error a product or quotient of non-zero operands may have lost to underflow,
+/// which the relative rounding term does not cover (a result of zero would pass for exact).
+#[inline(always)]
+fn underflow(result: f64, a: f64, b: f64) -> f64 {
+    if result.abs() < f64::MIN_POSITIVE && a != 0.0 && b != 0.0 {
+        f64::MIN_POSITIVE
+    } else {
+        0.0
+    }
+}
+
 /// An `f64` value and a bound on its distance to the exact value it stands for.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct ErrorBound {
@@ -55,9 +66,10 @@ impl Mul for ErrorBound {
     type Output = ErrorBound;
     #[inline(always)]
     fn mul(self, o: ErrorBound) -> ErrorBound {
+        let value = self.value * o.value;
         let propagated =
             self.value.abs() * o.error + o.value.abs() * self.error + self.error * o.error;
-        ErrorBound::new(self.value * o.value, propagated)
+        ErrorBound::new(value, propagated + underflow(value, self.value, o.value))
     }
 }
 
@@ -75,7 +87,8 @@ impl Div for ErrorBound {
         // |a'/b' - a/b| <= (|a| e_b + |b| e_a) / (|b| (|b| - e_b)).
         let propagated = (self.value.abs() * o.error + o.value.abs() * self.error)
             / (o.value.abs() * margin * (1.0 - 4.0 * f64::EPSILON));
-        ErrorBound::new(self.value / o.value, propagated)
+        let value = self.value / o.value;
+        ErrorBound::new(value, propagated + underflow(value, self.value, o.value))
     }
 }
 
@@ -151,6 +164,9 @@ mod tests {
         let third = ErrorBound::from_f64(1.0) / ErrorBound::from_f64(3.0);
         let back = third * ErrorBound::from_f64(3.0) - ErrorBound::from_f64(1.0);
         assert_eq!(back.certified_sign(), None);
+        let tiny = ErrorBound::from_f64(1e-170);
+        assert_eq!((tiny * tiny).certified_sign(), None);
+        assert_eq!((tiny / ErrorBound::from_f64(1e170)).certified_sign(), None);
         let huge = ErrorBound::from_f64(1e300);
         assert_eq!((huge * huge).certified_sign(), None);
         assert_eq!((huge * huge - huge * huge).certified_sign(), None);

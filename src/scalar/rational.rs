@@ -38,15 +38,18 @@ impl Q {
         }
     }
 
-    /// The nearest `f64` (for reports; exactness is in the sign).
+    /// The nearest `f64` (for reports and positions; exactness is in the sign), through an
+    /// exact rational, so that no scaling overflows or underflows on the way.
     pub(crate) fn to_f64(&self) -> f64 {
-        let (n, d) = (self.n.to_f64(), self.d.to_f64());
-        if n.is_finite() && d.is_finite() && d != 0.0 {
-            n / d * 2f64.powi(self.e.clamp(-2000, 2000) as i32)
+        let mut r = rug::Rational::from((&self.n, &self.d));
+        let shift = self.e.unsigned_abs().min(u32::MAX as u64) as u32;
+        if self.e >= 0 {
+            r <<= shift;
         } else {
-            rug::Rational::from((self.n.clone(), self.d.clone())).to_f64()
-                * 2f64.powi(self.e.clamp(-2000, 2000) as i32)
+            r >>= shift;
         }
+        // Rounded to nearest (a rational's own conversion truncates).
+        rug::Float::with_val(53, &r).to_f64()
     }
 
     /// `self + o`, or `self - o` if `negate`.
@@ -227,6 +230,16 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn values_far_from_one_convert_to_f64() {
+        let tiny = Q::from_f64(1e-160);
+        let one = Q::from_f64(1.0);
+        assert_eq!((tiny.clone() * &tiny + &one).to_f64(), 1.0);
+        assert_eq!(Q::from_f64(2.5e-308).to_f64(), 2.5e-308);
+        assert_eq!((tiny.clone() / &Q::from_f64(3.0)).to_f64(), 1e-160 / 3.0);
+        assert_eq!(Q::from_f64(-1e300).to_f64(), -1e300);
     }
 
     #[test]

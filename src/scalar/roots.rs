@@ -291,17 +291,17 @@ pub(crate) fn crossings<T: CertifiedSign>(
     let c_q = q2_excess.clone() - &(eq2.c.clone() / &eq2.a);
     let two_alpha = two.clone() * &alpha;
     // At the foot of a pseudo-source on the edge's line (a vertex's wedge along its edge), P is
-    // (G / 2)^2 and its slope -+alpha G, G the gap. A range that starts or ends at such a
-    // vertex, where the other wedge gives the vertex its distance, has a near-double root of P
-    // there, which no filter can place; the gap's sign can.
+    // (G / 2)^2 and its slope -+alpha G, G the gap (either one: they agree when a y is zero).
+    // G != 0 here, since the discriminant beta^2 G^2 is positive. A range that starts or ends
+    // at such a vertex, where the other wedge gives the vertex its distance, has a near-double
+    // root of P there, which no filter can place; the gap's sign can.
     let at_end = |larger: bool, end: &T, from_lo: &T, is_hi: bool| -> Option<Sign> {
         for (s, slope) in [(a, negate(alpha_sign)), (b, alpha_sign)] {
             if s.y.certified_sign()? == Sign::Zero
                 && (s.x.clone() - end).certified_sign()? == Sign::Zero
             {
                 let g = gap(false)?;
-                let at_foot = g.times(g);
-                return roots.root_minus_given(larger, at_foot, || Some(slope.times(g)));
+                return roots.root_minus_given(larger, Sign::Positive, || Some(slope.times(g)));
             }
         }
         let slope = || (two.clone() * &eq2.a * from_lo + &eq2.b).certified_sign();
@@ -318,16 +318,14 @@ pub(crate) fn crossings<T: CertifiedSign>(
         let sl = match alpha_sign {
             Sign::Zero => gamma.certified_sign()?,
             sm => {
-                // At L's zero p, P(p) = -beta^2 q2(p): negative, or zero where p is the foot
-                // of a pseudo-source on the line and the gap is zero. Known without P(p),
-                // which a near-tangency puts beyond any filter.
-                let at_p = match (b.y.certified_sign()?, gap(false)?) {
-                    (Sign::Zero, Sign::Zero) => Sign::Zero,
-                    _ => Sign::Negative,
-                };
+                // At L's zero p, P(p) = -beta^2 q2(p) < 0: q2(p) = 0 only at the foot of a
+                // pseudo-source on the line with a zero gap, where the discriminant is zero.
+                // Known without P(p), which a near-tangency puts beyond any filter.
                 let p = -(gamma.clone() / &two_alpha);
                 let slope = || (two.clone() * &eq2.a * &p + &eq2.b).certified_sign();
-                roots.root_minus_given(larger, at_p, slope)?.times(sm)
+                roots
+                    .root_minus_given(larger, Sign::Negative, slope)?
+                    .times(sm)
             }
         };
         if sl != Sign::Zero && sl != sbeta {
