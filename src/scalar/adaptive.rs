@@ -22,6 +22,7 @@
 use super::audit::{self, Certificate, DecisionCounts};
 use super::double_double::DoubleDouble;
 use super::error_bound::ErrorBound;
+use super::float;
 use super::rational::Q;
 use super::roots::{self, CertifiedSign};
 use super::{BisectorRoots, Field, Ring, Scalar, Sign, SourceDistance};
@@ -107,7 +108,7 @@ fn lift<T: Ring>(d: &SourceDistance<Adaptive>) -> SourceDistance<T> {
 }
 
 /// The signs [`roots::crossings`] may ask apart from the rest when a filter cannot tell them,
-/// each decided exactly through its own filters, and once for all stages.
+/// each decided exactly (double-double, then exact rationals), and once for all stages.
 struct Signs<'a> {
     a: &'a SourceDistance<Adaptive>,
     b: &'a SourceDistance<Adaptive>,
@@ -128,10 +129,11 @@ impl Signs<'_> {
 
     fn sign(&self, at: usize) -> Option<Sign> {
         let mut known = self.known.get();
+        // Asked only once the `f64` filter of the meeting could not tell: start finer.
         let sign = *known[at].get_or_insert_with(|| {
             filtered(
-                || self.decide::<ErrorBound>(at),
                 || self.decide::<DoubleDouble>(at),
+                || None,
                 || self.decide::<Q>(at),
             )
         });
@@ -197,14 +199,7 @@ impl Scalar for Adaptive {
 
     #[inline(always)]
     fn compare_distance(&self, other: &Self) -> Ordering {
-        let tie = Resolution::DISTANCE * self.0.abs().max(other.0.abs());
-        if self.0 < other.0 - tie {
-            Ordering::Less
-        } else if self.0 > other.0 + tie {
-            Ordering::Greater
-        } else {
-            Ordering::Equal
-        }
+        float::compare_with_tie(self.0, other.0, Resolution::DISTANCE)
     }
 
     #[inline(always)]

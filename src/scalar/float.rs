@@ -71,14 +71,7 @@ impl Scalar for f64 {
 
     #[inline(always)]
     fn compare_distance(&self, other: &Self) -> Ordering {
-        let tie = FloatTolerance::DISTANCE * self.abs().max(other.abs());
-        if *self < *other - tie {
-            Ordering::Less
-        } else if *self > *other + tie {
-            Ordering::Greater
-        } else {
-            Ordering::Equal
-        }
+        compare_with_tie(*self, *other, FloatTolerance::DISTANCE)
     }
 
     #[inline(always)]
@@ -146,6 +139,20 @@ impl Scalar for f64 {
             [r, s] => BisectorRoots::Two(r, s),
             _ => unreachable!("a quadratic has at most two roots"),
         }
+    }
+}
+
+/// Compares `a` and `b`, calling them equal when they differ by at most `relative` times the
+/// larger magnitude.
+#[inline(always)]
+pub(crate) fn compare_with_tie(a: f64, b: f64, relative: f64) -> Ordering {
+    let tie = relative * a.abs().max(b.abs());
+    if a < b - tie {
+        Ordering::Less
+    } else if a > b + tie {
+        Ordering::Greater
+    } else {
+        Ordering::Equal
     }
 }
 

@@ -158,21 +158,19 @@ impl<T: CertifiedSign> TwoRoots<'_, T> {
         at_p: Sign,
         slope: impl FnOnce() -> Option<Sign>,
     ) -> Option<Sign> {
-        let between = at_p.times(self.sa);
-        if between == Sign::Negative {
-            return Some(if larger {
-                Sign::Positive
-            } else {
-                Sign::Negative
-            });
-        }
-        // The sign of p minus the vertex -B / (2A).
-        let side = slope()?.times(self.sa);
-        Some(match (between, side) {
-            (Sign::Negative, _) => unreachable!("decided above"),
-            (Sign::Positive, s) => negate(s),
+        // p between the roots, or else left or right of both by its side of the vertex
+        // -B / (2A) (the slope's sign, times A's).
+        Some(match at_p.times(self.sa) {
+            Sign::Negative => {
+                if larger {
+                    Sign::Positive
+                } else {
+                    Sign::Negative
+                }
+            }
+            Sign::Positive => negate(slope()?.times(self.sa)),
             // p is a root: the smaller one if it is left of the vertex.
-            (Sign::Zero, s) => match (s == Sign::Negative, larger) {
+            Sign::Zero => match (slope()?.times(self.sa) == Sign::Negative, larger) {
                 (true, false) | (false, true) => Sign::Zero,
                 (true, true) => Sign::Positive,
                 (false, false) => Sign::Negative,
