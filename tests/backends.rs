@@ -201,7 +201,7 @@ fn example3_in<S: Scalar>() {
     // test is exact for the rounded values); they carry nothing, so look past them.
     let finals: Vec<_> = field
         .wedges(e0)
-        .iter()
+        .into_iter()
         .filter(|w| w.b1.to_f64() - w.b0.to_f64() > 1e-9)
         .collect();
     assert_eq!(finals.len(), 2);

@@ -262,7 +262,7 @@ fn example4_face20_table() {
     };
     let v2 = field
         .wedges(e)
-        .iter()
+        .into_iter()
         .find(|w| {
             w.pseudo_source == PseudoSource::Source(0)
                 && w.tau.index() != mesh.edge(e).side_of(FaceId(20)).expect("side")

@@ -13,6 +13,7 @@ mod validation;
 
 pub use error::MeshError;
 pub use ids::{EdgeId, FaceId, VertexId};
+pub(crate) use topology::normalizing_power;
 pub use topology::{Edge, Wing};
 pub use validation::ValidationReport;
 
@@ -170,15 +171,30 @@ impl TriMesh {
     }
 
     /// Whether geodesics may bend at the vertex, so that it must act as a pseudo-source \[MMP87\]:
-    /// boundary and bowtie vertices, and vertices whose angle sum is at least 2 pi (saddles and,
-    /// to be safe under rounding, flat ones). Over-approximating costs wedges, never correctness:
-    /// a path through any vertex is a path on the surface.
+    /// boundary and bowtie vertices, vertices whose angle sum is at least 2 pi (saddles and,
+    /// to be safe under rounding, flat ones), and the corners of degenerate faces
+    /// ([`ValidationReport::zero_area_faces`]). Over-approximating costs wedges, never
+    /// correctness: a path through any vertex is a path on the surface.
+    ///
+    /// Corners of degenerate faces bend because their angle sums mean nothing: a vertex at the
+    /// same place as another is, on the surface, the same point, so it must send wedges into
+    /// its own faces whenever its twin is reached (or is the source), whatever its angles.
     pub fn may_bend_geodesics(&self, v: VertexId) -> bool {
         /// Angle sums this close to 2 pi (relative) count as flat; acos-based sums carry ~1e-15.
         const FLAT_SLACK: f64 = 1e-9;
         let i = v.index();
         self.topology.boundary_vertex[i]
+            || self.topology.on_degenerate_face[i]
             || self.topology.angle_sum[i] >= std::f64::consts::TAU * (1.0 - FLAT_SLACK)
+    }
+
+    /// The power of two by which the engine multiplies coordinates so that its arithmetic
+    /// stays in range whatever the model's units: 1 unless the largest coordinate magnitude
+    /// lies outside `2^-64 ..= 2^64`. Multiplying by it is exact (but for subnormals, which
+    /// only a model spanning more than 300 orders of magnitude meets), and every distance the
+    /// library reports is in the model's own units.
+    pub fn unit_scale(&self) -> f64 {
+        self.topology.unit_scale
     }
 
     /// Whether the vertex lies on the boundary or joins several fans (a bowtie).

@@ -58,6 +58,8 @@ pub(super) struct Topology {
     pub(super) edge_length: Vec<f64>,
     pub(super) angle_sum: Vec<f64>,
     pub(super) boundary_vertex: Vec<bool>,
+    pub(super) on_degenerate_face: Vec<bool>,
+    pub(super) unit_scale: f64,
     vertex_face_start: Vec<u32>,
     vertex_face_list: Vec<FaceId>,
     vertex_edge_start: Vec<u32>,
@@ -76,6 +78,88 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
         a[2] * b[0] - a[0] * b[2],
         a[0] * b[1] - a[1] * b[0],
     ]
+}
+
+/// Edges shorter than this, against a model whose largest coordinate is scaled to about 1,
+/// are beyond the float backends: their squared lengths underflow (`2^-1000` is near the
+/// smallest normal `f64`). `2^-500`.
+const FLOAT_RESOLUTION: f64 = 3.054936363499605e-151;
+
+/// The power of two by which coordinates are multiplied for the mesh's own f64 geometry and
+/// for the engine's number types: 1 for models whose largest coordinate lies within
+/// `2^-64 ..= 2^64` (every model in ordinary units, computed exactly as given), otherwise the
+/// one that brings the largest coordinate near 1. Multiplying by a power of two is exact
+/// (below `2^-1022` it rounds to subnormals, which only a model spanning more than 300
+/// orders of magnitude reaches).
+fn unit_scale(positions: &[[f64; 3]]) -> f64 {
+    const COMFORTABLE: f64 = 18446744073709551616.0; // 2^64
+    let largest = positions
+        .iter()
+        .flatten()
+        .fold(0.0f64, |m, c| m.max(c.abs()));
+    if largest == 0.0 || (COMFORTABLE.recip()..=COMFORTABLE).contains(&largest) {
+        1.0
+    } else {
+        normalizing_power(largest)
+    }
+}
+
+/// The power of two `p` with `m p` in `[1, 2)` for a positive finite `m`, kept within
+/// `2^-1022 ..= 2^1022` (so that it and its inverse are normal numbers).
+pub(crate) fn normalizing_power(m: f64) -> f64 {
+    let exponent = m.log2().floor() as i32;
+    let power = (-exponent).clamp(-1022, 1022);
+    f64::from_bits(((power + 1023) as u64) << 52)
+}
+
+/// `v` scaled to unit length, computed without overflow or underflow; `None` for the zero
+/// vector.
+fn unit(v: [f64; 3]) -> Option<[f64; 3]> {
+    let largest = v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    if largest == 0.0 {
+        return None;
+    }
+    let v = v.map(|c| c * normalizing_power(largest));
+    let norm = dot(v, v).sqrt();
+    Some(v.map(|c| c / norm))
+}
+
+/// The length of `v`, without overflow or underflow in its square.
+fn length(v: [f64; 3]) -> f64 {
+    let largest = v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    if largest == 0.0 {
+        return 0.0;
+    }
+    let power = normalizing_power(largest);
+    let v = v.map(|c| c * power);
+    dot(v, v).sqrt() / power
+}
+
+/// Whether a triangle (in unit-scaled coordinates) is degenerate for the f64 geometry: its
+/// corners collinear to within rounding, or two of them coincident. The sine of its largest
+/// angle is then below a few ulps, and an unfolding computed in f64 across it means little.
+fn is_degenerate(p: [[f64; 3]; 3]) -> bool {
+    /// Sines of the face's largest angle below this count as degenerate: well above the
+    /// rounding of a cross product of unit vectors (a few ulps), far below any angle a
+    /// modelled face has.
+    const SINE: f64 = 64.0 * f64::EPSILON;
+    let sides = [sub(p[1], p[0]), sub(p[2], p[1]), sub(p[0], p[2])];
+    // The largest angle is the one between the two shortest sides.
+    let mut order = [0, 1, 2];
+    order.sort_by(|&i, &j| length(sides[i]).total_cmp(&length(sides[j])));
+    match (unit(sides[order[0]]), unit(sides[order[1]])) {
+        (Some(u), Some(w)) => length(cross(u, w)) <= SINE,
+        _ => true,
+    }
+}
+
+/// The angle between two vectors (0 if either is zero), computed on unit vectors so that it
+/// does not depend on their magnitudes.
+fn angle(u: [f64; 3], w: [f64; 3]) -> f64 {
+    match (unit(u), unit(w)) {
+        (Some(u), Some(w)) => length(cross(u, w)).atan2(dot(u, w)),
+        _ => 0.0,
+    }
 }
 
 /// Compressed adjacency lists: `start[v]..start[v + 1]` indexes `list`.
@@ -165,16 +249,21 @@ impl Topology {
             });
         }
 
-        let edge_length: Vec<f64> = edges
-            .iter()
-            .map(|e| {
-                let d = sub(
-                    positions[e.vertices[1].index()],
-                    positions[e.vertices[0].index()],
-                );
-                dot(d, d).sqrt()
-            })
-            .collect();
+        // Geometry in coordinates scaled by a power of two (exact), so that squared lengths
+        // neither overflow nor underflow whatever the model's units.
+        let unit_scale = unit_scale(positions);
+        let scaled = |v: usize| positions[v].map(|c| c * unit_scale);
+        let mut edge_length = Vec::with_capacity(edges.len());
+        for (ei, e) in edges.iter().enumerate() {
+            let scaled_length = length(sub(
+                scaled(e.vertices[1].index()),
+                scaled(e.vertices[0].index()),
+            ));
+            if scaled_length > 0.0 && scaled_length < FLOAT_RESOLUTION {
+                report.float_unresolved_edges.push(EdgeId(ei as u32));
+            }
+            edge_length.push(scaled_length / unit_scale);
+        }
 
         let mut wings = Vec::with_capacity(2 * edges.len());
         for (ei, e) in edges.iter().enumerate() {
@@ -225,19 +314,19 @@ impl Topology {
         );
 
         let mut angle_sum = vec![0.0; nv];
+        let mut on_degenerate_face = vec![false; nv];
         for (fi, f) in faces.iter().enumerate() {
-            let p = [0, 1, 2].map(|i| positions[f[i] as usize]);
-            let n = cross(sub(p[1], p[0]), sub(p[2], p[0]));
-            let scale = dot(sub(p[1], p[0]), sub(p[1], p[0])).sqrt()
-                * dot(sub(p[2], p[0]), sub(p[2], p[0])).sqrt();
-            if dot(n, n).sqrt() <= f64::EPSILON * scale {
+            let p = [0, 1, 2].map(|i| scaled(f[i] as usize));
+            if is_degenerate(p) {
                 report.zero_area_faces.push(FaceId(fi as u32));
+                for &v in f {
+                    on_degenerate_face[v as usize] = true;
+                }
             }
             for i in 0..3 {
                 let u = sub(p[(i + 1) % 3], p[i]);
                 let w = sub(p[(i + 2) % 3], p[i]);
-                let c = cross(u, w);
-                angle_sum[f[i] as usize] += dot(c, c).sqrt().atan2(dot(u, w));
+                angle_sum[f[i] as usize] += angle(u, w);
             }
         }
 
@@ -293,6 +382,8 @@ impl Topology {
                 edge_length,
                 angle_sum,
                 boundary_vertex,
+                on_degenerate_face,
+                unit_scale,
                 vertex_face_start,
                 vertex_face_list,
                 vertex_edge_start,

@@ -4,14 +4,19 @@
 //! here do not, but a researcher wants to know about them because they change what the
 //! distances mean (e.g. vertices no face uses are unreachable, with distance +infinity).
 
-use super::{FaceId, VertexId};
+use super::{EdgeId, FaceId, VertexId};
 use serde::Serialize;
 
 /// Conditions found while building a [`TriMesh`](super::TriMesh) that leave it usable.
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 pub struct ValidationReport {
-    /// Faces whose three corners are collinear (area zero in f64).
+    /// Faces whose three corners are collinear or coincident (to within a few ulps in f64):
+    /// their corners act as pseudo-sources ([`TriMesh::may_bend_geodesics`](super::TriMesh::may_bend_geodesics)).
     pub zero_area_faces: Vec<FaceId>,
+    /// Edges of non-zero length shorter than `2^-500` times the model's largest coordinate:
+    /// their squared lengths underflow in `f64`, so the `f64` and adaptive backends treat them
+    /// as if their ends coincided. The exact backend measures them exactly.
+    pub float_unresolved_edges: Vec<EdgeId>,
     /// Vertices that no face uses; they are unreachable from any source on a face.
     pub unreferenced_vertices: Vec<VertexId>,
     /// Vertices whose incident faces form more than one fan (a "bowtie"). Geodesics may pass
@@ -35,6 +40,13 @@ impl ValidationReport {
                 "{} zero-area face(s), first {}",
                 self.zero_area_faces.len(),
                 self.zero_area_faces[0]
+            ));
+        }
+        if !self.float_unresolved_edges.is_empty() {
+            out.push(format!(
+                "{} edge(s) shorter than 2^-500 of the model's size, first {}: the f64 and adaptive backends cannot resolve them (use --backend exact)",
+                self.float_unresolved_edges.len(),
+                self.float_unresolved_edges[0]
             ));
         }
         if !self.unreferenced_vertices.is_empty() {

@@ -72,20 +72,21 @@ impl<S: Scalar> GeodesicField<'_, S> {
             }
             report.edges_reached += 1;
             let edge = EdgeId(i as u32);
-            let length = self.edge_length(edge);
+            let length = self.unfolding.length(edge);
+            let model = |x: &S| self.unfolding.to_model(x.to_f64());
             let mut reached = S::zero();
             for w in wedges {
                 if S::has_extent(&reached, &w.b0, length) {
                     report.issues.push(CoverageIssue::Gap {
                         edge,
-                        from: reached.to_f64(),
-                        to: w.b0.to_f64(),
+                        from: model(&reached),
+                        to: model(&w.b0),
                     });
                 } else if S::has_extent(&w.b0, &reached, length) {
                     report.issues.push(CoverageIssue::Overlap {
                         edge,
-                        from: w.b0.to_f64(),
-                        to: S::min_of(&reached, &w.b1).to_f64(),
+                        from: model(&w.b0),
+                        to: model(&S::min_of(&reached, &w.b1)),
                     });
                 }
                 reached = S::max_of(&reached, &w.b1);
@@ -93,8 +94,8 @@ impl<S: Scalar> GeodesicField<'_, S> {
             if S::has_extent(&reached, length, length) {
                 report.issues.push(CoverageIssue::Gap {
                     edge,
-                    from: reached.to_f64(),
-                    to: length.to_f64(),
+                    from: model(&reached),
+                    to: model(length),
                 });
             }
         }

@@ -60,7 +60,9 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     pub fn vertex_distance(&self, v: VertexId) -> f64 {
         self.vertices[v.index()]
             .as_ref()
-            .map_or(f64::INFINITY, |d| d.distance.to_f64())
+            .map_or(f64::INFINITY, |d| {
+                self.unfolding.to_model(d.distance.to_f64())
+            })
     }
 
     /// The distance of every vertex, in file order (`f64::INFINITY` where unreachable).
@@ -71,8 +73,10 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     }
 
     /// A vertex's distance in the backend's own number type; `None` if unreachable.
-    pub fn vertex_distance_exact(&self, v: VertexId) -> Option<&S> {
-        self.vertices[v.index()].as_ref().map(|d| &d.distance)
+    pub fn vertex_distance_exact(&self, v: VertexId) -> Option<S> {
+        self.vertices[v.index()]
+            .as_ref()
+            .map(|d| self.to_model(&d.distance))
     }
 
     /// Index (into [`sources`](Self::sources)) of the source nearest to a vertex.
@@ -80,9 +84,15 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
         self.vertices[v.index()].as_ref().map(|d| d.source)
     }
 
-    /// The final wedges on an edge, sorted along it (from its `vertices[0]`).
-    pub fn wedges(&self, e: EdgeId) -> &[Wedge<S>] {
-        &self.wedges[e.index()]
+    /// The final wedges on an edge, sorted along it (from its `vertices[0]`), in the model's
+    /// units.
+    pub fn wedges(&self, e: EdgeId) -> Vec<Wedge<S>> {
+        let wedges = &self.wedges[e.index()];
+        if self.mesh.unit_scale() == 1.0 {
+            return wedges.clone();
+        }
+        let factor = self.model_factor();
+        wedges.iter().map(|w| w.scaled(&factor)).collect()
     }
 
     /// The number of final wedges on every edge.
@@ -91,7 +101,20 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     }
 
     /// The length of an edge in the backend's number type.
-    pub fn edge_length(&self, e: EdgeId) -> &S {
-        self.unfolding.length(e)
+    pub fn edge_length(&self, e: EdgeId) -> S {
+        self.to_model(self.unfolding.length(e))
+    }
+
+    /// The factor from the engine's scaled units to the model's (a power of two).
+    fn model_factor(&self) -> S {
+        S::from_f64(self.mesh.unit_scale().recip())
+    }
+
+    /// A length in the engine's scaled units, in the model's units (exactly).
+    fn to_model(&self, x: &S) -> S {
+        if self.mesh.unit_scale() == 1.0 {
+            return x.clone();
+        }
+        x.clone() * &self.model_factor()
     }
 }

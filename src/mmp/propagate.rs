@@ -5,7 +5,7 @@ use super::field::GeodesicField;
 use super::intersect::Scratch;
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
-use super::unfold::{planar_coordinates, position_in_space, FaceLayout, Planar, Unfolding};
+use super::unfold::{FaceLayout, Planar, Unfolding};
 use super::wedge::{PseudoSource, Side, Wedge};
 use crate::mesh::{EdgeId, TriMesh, VertexId};
 use crate::scalar::{Scalar, Sign, Site};
@@ -162,7 +162,8 @@ pub(crate) struct Engine<'m, S: Scalar> {
     pub(crate) lists: Vec<Vec<u32>>,
     pub(crate) list_entries: usize,
     pub(crate) vertices: Vec<Option<VertexDistance<S>>>,
-    emitted_at: Vec<f64>,
+    /// Whether a vertex's distance improved since it last acted as a pseudo-source.
+    pending_emission: Vec<bool>,
     queue: BinaryHeap<Event>,
     max_distance: f64,
     pub(crate) record_decisions: bool,
@@ -173,17 +174,21 @@ pub(crate) struct Engine<'m, S: Scalar> {
 
 impl<'m, S: Scalar> Engine<'m, S> {
     fn new(mesh: &'m TriMesh, options: &PropagateOptions) -> Self {
+        let unfolding = Unfolding::new(mesh);
+        let max_distance = options
+            .max_distance
+            .map_or(f64::INFINITY, |d| unfolding.scaled_from_model(d));
         Engine {
             mesh,
-            unfolding: Unfolding::new(mesh),
+            unfolding,
             slots: Vec::new(),
             free: Vec::new(),
             lists: vec![Vec::new(); mesh.edge_count()],
             list_entries: 0,
             vertices: vec![None; mesh.vertex_count()],
-            emitted_at: vec![f64::INFINITY; mesh.vertex_count()],
+            pending_emission: vec![false; mesh.vertex_count()],
             queue: BinaryHeap::new(),
-            max_distance: options.max_distance.unwrap_or(f64::INFINITY),
+            max_distance,
             record_decisions: options.record_decisions,
             reached: 0,
             stats: Stats::default(),
@@ -202,7 +207,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 progress(&Progress {
                     vertices_reached: self.reached,
                     vertex_count: self.mesh.vertex_count(),
-                    front: event.key,
+                    front: self.unfolding.to_model(event.key),
                 });
             }
             match event.kind {
@@ -224,8 +229,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     let Some(known) = &self.vertices[v.index()] else {
                         continue;
                     };
-                    if known.approx < self.emitted_at[v.index()] {
-                        self.emitted_at[v.index()] = known.approx;
+                    if std::mem::take(&mut self.pending_emission[v.index()]) {
                         let (sigma, source) = (known.distance.clone(), known.source);
                         self.stats.pseudo_source_emissions += 1;
                         self.emit_from_vertex(v, sigma, PseudoSource::Vertex(v), source);
@@ -236,7 +240,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         progress(&Progress {
             vertices_reached: self.reached,
             vertex_count: self.mesh.vertex_count(),
-            front: self.max_distance.min(f64::MAX),
+            front: self.unfolding.to_model(self.max_distance.min(f64::MAX)),
         });
     }
 
@@ -304,6 +308,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             source,
         });
         if self.mesh.may_bend_geodesics(v) {
+            self.pending_emission[v.index()] = true;
             self.queue.push(Event {
                 key: approx,
                 kind: EventKind::Vertex(v),
@@ -318,6 +323,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             SurfacePoint::Vertex(v) => {
                 self.improve_vertex(v, S::zero(), k);
                 self.emit_from_vertex(v, S::zero(), source, k);
+                self.pending_emission[v.index()] = false;
             }
             SurfacePoint::Edge { edge, t } => {
                 let length = self.unfolding.length(edge).clone();
@@ -326,7 +332,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     y: S::zero(),
                 };
                 self.add_wedge(edge, on_edge, Side::First, S::zero(), source, k);
-                let p = position_in_space::<S>(self.mesh, point);
+                let p = self.unfolding.position(self.mesh, point);
                 for f in self.mesh.edge(edge).faces.into_iter().flatten() {
                     for g in self.mesh.face_edges(f) {
                         if g != edge {
@@ -336,7 +342,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 }
             }
             SurfacePoint::Face { face, .. } => {
-                let p = position_in_space::<S>(self.mesh, point);
+                let p = self.unfolding.position(self.mesh, point);
                 for g in self.mesh.face_edges(face) {
                     self.emit_from_point(&p, face, g, source, k);
                 }
@@ -352,14 +358,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
         source: PseudoSource,
         k: usize,
     ) {
-        let edge = self.mesh.edge(g);
-        let side = edge.side_of(face).expect("edge of the face");
-        let at = planar_coordinates(
-            p,
-            self.mesh.position(edge.vertices[0]),
-            self.mesh.position(edge.vertices[1]),
-            self.unfolding.length(g),
-        );
+        let side = self.mesh.edge(g).side_of(face).expect("edge of the face");
+        let Some(at) = self.unfolding.planar(self.mesh, g, p) else {
+            return; // An edge of length zero carries no wedge.
+        };
         self.add_wedge(g, at, Side::from_index(side), S::zero(), source, k);
     }
 
@@ -371,11 +373,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let corner = mesh.face(f).iter().position(|&c| c == v).expect("corner");
             let g = mesh.face_edges(f)[(corner + 1) % 3];
             let side = mesh.edge(g).side_of(f).expect("edge of the face");
-            let (x, y) = self
-                .unfolding
-                .apex(g, side)
-                .expect("face on that side")
-                .clone();
+            // None only for an opposite edge of length zero, which carries no wedge.
+            let Some((x, y)) = self.unfolding.apex(g, side).cloned() else {
+                continue;
+            };
             self.add_wedge(
                 g,
                 Planar { x, y },
@@ -438,17 +439,23 @@ impl<'m, S: Scalar> Engine<'m, S> {
         };
         let face = layout.wing.face;
         let s = w.source_point();
-        let shadow = layout.apex_shadow(&s);
         let length = layout.length;
-        let apex = S::within(&shadow, &w.b0, &w.b1, length)
+        // Which way the rays through the range's ends pass the apex decides which edges the
+        // children lie on: asked of the number type on the stored values (an orientation),
+        // never read off a constructed shadow. Whether the apex itself is reached is asked at
+        // the backend's resolution, as for any point of a range.
+        let (side0, side1) = (layout.ray_side(&s, &w.b0), layout.ray_side(&s, &w.b1));
+        let apex = S::within(&layout.apex_shadow(&s), &w.b0, &w.b1, length)
             .then(|| (layout.apex_vertex(), layout.apex_distance(&s) + &w.sigma));
         let zero = S::zero();
         let one = S::from_f64(1.0);
         let clamp = |t: S| S::max_of(&zero, &S::min_of(&one, &t));
         let mut children: [Option<Child<S>>; 2] = [None, None];
-        if w.b0.compare(&shadow) == Ordering::Less {
+        // An edge of length zero (coincident corners) carries no wedge; its face passes rays
+        // on to its other edge unchanged.
+        if side0 == Ordering::Less && !self.unfolding.is_zero_length(layout.wing.near) {
             let t0 = clamp(layout.near_hit(&s, &w.b0));
-            let t1 = if w.b1.compare(&shadow) == Ordering::Less {
+            let t1 = if side1 == Ordering::Less {
                 clamp(layout.near_hit(&s, &w.b1))
             } else {
                 one.clone()
@@ -456,8 +463,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let (p0, p1) = (layout.near_position(&t0), layout.near_position(&t1));
             children[0] = Some((layout.wing.near, p0, p1, layout.to_near(&s)));
         }
-        if w.b1.compare(&shadow) == Ordering::Greater {
-            let u0 = if w.b0.compare(&shadow) == Ordering::Greater {
+        if side1 == Ordering::Greater && !self.unfolding.is_zero_length(layout.wing.far) {
+            let u0 = if side0 == Ordering::Greater {
                 clamp(layout.far_hit(&s, &w.b0))
             } else {
                 zero.clone()

@@ -4,7 +4,7 @@
 
 use super::field::GeodesicField;
 use super::source::{PointError, SurfacePoint};
-use super::unfold::{planar_coordinates, position_in_space, Planar};
+use super::unfold::Planar;
 use super::wedge::Wedge;
 use crate::mesh::{EdgeId, FaceId, VertexId};
 use crate::scalar::{Scalar, Sign};
@@ -49,9 +49,9 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// [`PointError`] if the point is not a point of the mesh.
     pub fn distance_at(&self, point: &SurfacePoint) -> Result<f64, PointError> {
         let point = point.validated(self.mesh)?;
-        Ok(self
-            .best_at(&point)
-            .map_or(f64::INFINITY, |b| b.distance.to_f64()))
+        Ok(self.best_at(&point).map_or(f64::INFINITY, |b| {
+            self.unfolding.to_model(b.distance.to_f64())
+        }))
     }
 
     /// Index (into [`sources`](Self::sources)) of the source nearest to any surface point;
@@ -75,24 +75,20 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 via: Via::Vertex(v),
             });
         }
-        let p = position_in_space::<S>(self.mesh, point);
+        let p = self.unfolding.position(self.mesh, point);
         let mut best = None;
         for face in point.faces(self.mesh) {
             for edge in self.mesh.face_edges(face) {
-                let e = self.mesh.edge(edge);
-                let at = planar_coordinates(
-                    &p,
-                    self.mesh.position(e.vertices[0]),
-                    self.mesh.position(e.vertices[1]),
-                    self.unfolding.length(edge),
-                );
+                let Some(at) = self.unfolding.planar(self.mesh, edge, &p) else {
+                    continue; // An edge of length zero carries no wedge.
+                };
                 if let Some(found) = self.best_through_edge(edge, face, &at, |_| true) {
                     keep_better(&mut best, found);
                 }
             }
             for v in self.mesh.face(face) {
                 if let Some(d) = &self.vertices[v.index()] {
-                    let q = self.mesh.position(v).map(S::from_f64);
+                    let q = self.unfolding.position(self.mesh, &SurfacePoint::Vertex(v));
                     let gap = [0, 1, 2].map(|i| q[i].clone() - &p[i]);
                     let len = (gap[0].clone() * &gap[0]
                         + gap[1].clone() * &gap[1]

@@ -93,7 +93,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     pub fn trace_back(&self, target: &SurfacePoint) -> Result<GeodesicPath, TraceError> {
         let target = target.validated(self.mesh)?;
         let best = self.best_at(&target).ok_or(TraceError::Unreachable)?;
-        let distance = best.distance.to_f64();
+        let distance = self.unfolding.to_model(best.distance.to_f64());
         let mut simplices = vec![target];
         let mut via = best.via;
         let mut start = None;
@@ -181,8 +181,13 @@ impl<S: Scalar> GeodesicField<'_, S> {
         for &face in self.mesh.vertex_faces(v) {
             let corner = self.mesh.face(face).iter().position(|&c| c == v)?;
             let edge = self.mesh.face_edges(face)[(corner + 1) % 3];
-            let side = self.mesh.edge(edge).side_of(face)?;
-            let (x, y) = self.unfolding.apex(edge, side)?.clone();
+            let Some(side) = self.mesh.edge(edge).side_of(face) else {
+                continue;
+            };
+            // No apex on an opposite edge of length zero, which carries no wedge.
+            let Some((x, y)) = self.unfolding.apex(edge, side).cloned() else {
+                continue;
+            };
             let beyond = |w: &Wedge<S>| w.pseudo_source != own && w.tau.index() != side;
             consider(self.best_through_edge(edge, face, &Planar { x, y }, beyond));
         }

@@ -6,8 +6,9 @@
 //! point from an edge's frame into the frames of the face's two other edges.
 
 use super::source::SurfacePoint;
-use crate::mesh::{EdgeId, TriMesh, VertexId, Wing};
-use crate::scalar::Scalar;
+use crate::mesh::{normalizing_power, EdgeId, TriMesh, VertexId, Wing};
+use crate::scalar::{Scalar, Sign};
+use std::cmp::Ordering;
 
 /// A point in an edge's frame.
 #[derive(Clone, Debug, PartialEq)]
@@ -21,87 +22,115 @@ pub struct Planar<S> {
 /// Per-run geometry in the backend's number type: edge lengths and, for each side of each edge,
 /// the apex of the face there. Computed once per propagation so that every wedge reuses the same
 /// values (for exact backends: the same radicals).
+///
+/// Coordinates are multiplied by the mesh's [`unit_scale`](TriMesh::unit_scale) (a power of
+/// two, exactly), so every length here is in scaled units; [`Unfolding::to_model`] and
+/// [`Unfolding::scaled_from_model`] convert distances to and from the model's units.
 pub(crate) struct Unfolding<S> {
     edge_length: Vec<S>,
+    /// Whether the edge has length zero (its ends coincide): no wedge lives on it, and no
+    /// point is laid out in its frame.
+    zero_length: Vec<bool>,
     /// `apex[2 e + side]`: `(x, h)` of the apex of the face on `side` of edge `e`, `h >= 0`.
     apex: Vec<Option<(S, S)>>,
+    /// The mesh's unit scale.
+    scale: f64,
 }
 
-fn diff<S: Scalar>(p: [f64; 3], q: [f64; 3]) -> [S; 3] {
-    [0, 1, 2].map(|i| S::from_f64(p[i]) - S::from_f64(q[i]))
+fn sub<S: Scalar>(p: &[S; 3], q: &[S; 3]) -> [S; 3] {
+    [0, 1, 2].map(|i| p[i].clone() - &q[i])
 }
 
 fn dot<S: Scalar>(a: &[S; 3], b: &[S; 3]) -> S {
     a[0].clone() * &b[0] + a[1].clone() * &b[1] + a[2].clone() * &b[2]
 }
 
-/// The coordinates of point `p` in the frame of the edge from `v0` to `v1` of length `length`:
-/// `x` along the edge, `y >= 0` its distance from the line.
-pub(crate) fn planar_coordinates<S: Scalar>(
-    p: &[S; 3],
-    v0: [f64; 3],
-    v1: [f64; 3],
-    length: &S,
-) -> Planar<S> {
-    let u = diff::<S>(v1, v0);
-    let w = [0, 1, 2].map(|i| p[i].clone() - S::from_f64(v0[i]));
-    let along = dot(&u, &w);
-    let cross = [
-        u[1].clone() * &w[2] - u[2].clone() * &w[1],
-        u[2].clone() * &w[0] - u[0].clone() * &w[2],
-        u[0].clone() * &w[1] - u[1].clone() * &w[0],
-    ];
-    Planar {
-        x: along / length,
-        y: dot(&cross, &cross).sqrt() / length,
+/// The frame of an edge: its start and its direction, the edge vector multiplied by a power
+/// of two that brings its largest component near 1 (exactly), so that neither its squared
+/// length nor its products with other vectors leave the range of `f64`, however short the
+/// edge is against the model.
+struct EdgeFrame<S> {
+    origin: [S; 3],
+    direction: [S; 3],
+    /// `|direction|`.
+    norm: S,
+    /// The power of two the edge vector was multiplied by.
+    power: f64,
+}
+
+impl<S: Scalar> EdgeFrame<S> {
+    /// The frame of the edge from `v0` to `v1`; `None` if they coincide.
+    fn new(mesh: &TriMesh, v0: VertexId, v1: VertexId) -> Option<Self> {
+        let scale = mesh.unit_scale();
+        let (p0, p1) = (mesh.position(v0), mesh.position(v1));
+        let largest = (0..3).fold(0.0f64, |m, i| m.max((p1[i] * scale - p0[i] * scale).abs()));
+        if largest == 0.0 {
+            return None;
+        }
+        let power = normalizing_power(largest);
+        let origin = vertex_point::<S>(mesh, v0);
+        let factor = S::from_f64(power);
+        let direction = sub(&vertex_point::<S>(mesh, v1), &origin).map(|c: S| c * &factor);
+        let norm = dot(&direction, &direction).sqrt();
+        Some(EdgeFrame {
+            origin,
+            direction,
+            norm,
+            power,
+        })
+    }
+
+    /// The edge's length (scaled coordinates).
+    fn length(&self) -> S {
+        self.norm.clone() * &S::from_f64(self.power.recip())
+    }
+
+    /// The coordinates of `p` in the frame: `x` along the edge, `y >= 0` its distance from
+    /// the edge's line.
+    fn planar(&self, p: &[S; 3]) -> Planar<S> {
+        let (u, w) = (&self.direction, sub(p, &self.origin));
+        let cross = [
+            u[1].clone() * &w[2] - u[2].clone() * &w[1],
+            u[2].clone() * &w[0] - u[0].clone() * &w[2],
+            u[0].clone() * &w[1] - u[1].clone() * &w[0],
+        ];
+        Planar {
+            x: dot(u, &w) / &self.norm,
+            y: dot(&cross, &cross).sqrt() / &self.norm,
+        }
     }
 }
 
-/// A surface point's coordinates in space, in the backend's number type.
-pub(crate) fn position_in_space<S: Scalar>(mesh: &TriMesh, point: &SurfacePoint) -> [S; 3] {
-    let p = |v: VertexId| mesh.position(v).map(S::from_f64);
-    match *point {
-        SurfacePoint::Vertex(v) => p(v),
-        SurfacePoint::Edge { edge, t } => {
-            let [a, b] = mesh.edge(edge).vertices.map(p);
-            let t = S::from_f64(t);
-            [0, 1, 2].map(|i| a[i].clone() + (b[i].clone() - &a[i]) * &t)
-        }
-        SurfacePoint::Face { face, bary } => {
-            let c = mesh.face(face).map(p);
-            let w = bary.map(S::from_f64);
-            [0, 1, 2].map(|i| {
-                c[0][i].clone() * &w[0] + c[1][i].clone() * &w[1] + c[2][i].clone() * &w[2]
-            })
-        }
-    }
+/// A vertex's position in scaled coordinates, in the backend's number type.
+fn vertex_point<S: Scalar>(mesh: &TriMesh, v: VertexId) -> [S; 3] {
+    let scale = S::from_f64(mesh.unit_scale());
+    mesh.position(v).map(|c| S::from_f64(c) * &scale)
 }
 
 impl<S: Scalar> Unfolding<S> {
     pub(crate) fn new(mesh: &TriMesh) -> Self {
-        let edge_length: Vec<S> = mesh
-            .edges()
-            .iter()
-            .map(|e| {
-                let d = diff::<S>(mesh.position(e.vertices[1]), mesh.position(e.vertices[0]));
-                dot(&d, &d).sqrt()
-            })
-            .collect();
-        let mut apex = Vec::with_capacity(2 * mesh.edge_count());
+        let edge_count = mesh.edge_count();
+        let mut edge_length = Vec::with_capacity(edge_count);
+        let mut zero_length = Vec::with_capacity(edge_count);
+        let mut apex = Vec::with_capacity(2 * edge_count);
         for (i, e) in mesh.edges().iter().enumerate() {
+            let frame = EdgeFrame::<S>::new(mesh, e.vertices[0], e.vertices[1]);
+            edge_length.push(frame.as_ref().map_or_else(S::zero, EdgeFrame::length));
+            zero_length.push(frame.is_none());
             for side in 0..2 {
-                apex.push(mesh.wing(EdgeId(i as u32), side).map(|wing| {
-                    let p = planar_coordinates(
-                        &mesh.position(wing.apex).map(S::from_f64),
-                        mesh.position(e.vertices[0]),
-                        mesh.position(e.vertices[1]),
-                        &edge_length[i],
-                    );
+                let wing = mesh.wing(EdgeId(i as u32), side);
+                apex.push(frame.as_ref().zip(wing).map(|(frame, wing)| {
+                    let p = frame.planar(&vertex_point(mesh, wing.apex));
                     (p.x, p.y)
                 }));
             }
         }
-        Unfolding { edge_length, apex }
+        Unfolding {
+            edge_length,
+            zero_length,
+            apex,
+            scale: mesh.unit_scale(),
+        }
     }
 
     #[inline]
@@ -109,10 +138,60 @@ impl<S: Scalar> Unfolding<S> {
         &self.edge_length[e.index()]
     }
 
-    /// `(x, h)` of the apex of the face on `side` of `e`.
+    /// Whether the edge's ends coincide.
+    #[inline]
+    pub(crate) fn is_zero_length(&self, e: EdgeId) -> bool {
+        self.zero_length[e.index()]
+    }
+
+    /// `(x, h)` of the apex of the face on `side` of `e` (`None` without a face there, or on
+    /// an edge of length zero).
     #[inline]
     pub(crate) fn apex(&self, e: EdgeId, side: usize) -> Option<&(S, S)> {
         self.apex[2 * e.index() + side].as_ref()
+    }
+
+    /// A point in space (scaled coordinates) in the frame of edge `e`; `None` for an edge of
+    /// length zero, which has no frame.
+    pub(crate) fn planar(&self, mesh: &TriMesh, e: EdgeId, p: &[S; 3]) -> Option<Planar<S>> {
+        if self.is_zero_length(e) {
+            return None;
+        }
+        let [v0, v1] = mesh.edge(e).vertices;
+        EdgeFrame::new(mesh, v0, v1).map(|frame| frame.planar(p))
+    }
+
+    /// A surface point's position in space, in scaled coordinates.
+    pub(crate) fn position(&self, mesh: &TriMesh, point: &SurfacePoint) -> [S; 3] {
+        let p = |v: VertexId| vertex_point::<S>(mesh, v);
+        match *point {
+            SurfacePoint::Vertex(v) => p(v),
+            SurfacePoint::Edge { edge, t } => {
+                let [a, b] = mesh.edge(edge).vertices.map(p);
+                let t = S::from_f64(t);
+                [0, 1, 2].map(|i| a[i].clone() + (b[i].clone() - &a[i]) * &t)
+            }
+            SurfacePoint::Face { face, bary } => {
+                let c = mesh.face(face).map(p);
+                let w = bary.map(S::from_f64);
+                [0, 1, 2].map(|i| {
+                    c[0][i].clone() * &w[0] + c[1][i].clone() * &w[1] + c[2][i].clone() * &w[2]
+                })
+            }
+        }
+    }
+
+    /// A distance in scaled units, in the model's units (exact: a power of two; `inf` past
+    /// `f64::MAX`).
+    #[inline]
+    pub(crate) fn to_model(&self, d: f64) -> f64 {
+        d / self.scale
+    }
+
+    /// A distance in the model's units, in scaled units.
+    #[inline]
+    pub(crate) fn scaled_from_model(&self, d: f64) -> f64 {
+        d * self.scale
     }
 }
 
@@ -185,6 +264,23 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
             dx.clone() * &(s.y.clone() + self.apex_h) + s.y.clone() * &(s.x.clone() - self.apex_x);
         let den = dx * self.apex_h + s.y.clone() * &(self.length.clone() - self.apex_x);
         num / den
+    }
+
+    /// Where the ray from `s` (above the edge's line) through the point `b` of the edge passes
+    /// the apex: `Less` if `b` lies left of the apex's shadow (the ray leaves the face by the
+    /// near edge), `Greater` if right of it (by the far edge), `Equal` through the apex. The
+    /// orientation of `(s, b, apex)` [SSK+05 §4.1], decided by the number type.
+    #[inline]
+    pub(crate) fn ray_side(&self, s: &Planar<S>, b: &S) -> Ordering {
+        let zero = S::zero();
+        // Mirrored across the edge's line (apex above it, s below), which keeps the apex's
+        // coordinates as stored and reverses the orientation.
+        let below = -s.y.clone();
+        match S::orientation([&s.x, &below], [b, &zero], [self.apex_x, self.apex_h]) {
+            Sign::Negative => Ordering::Less,
+            Sign::Zero => Ordering::Equal,
+            Sign::Positive => Ordering::Greater,
+        }
     }
 
     /// Where the line from `s` through the apex meets the edge's line: rays through points left of

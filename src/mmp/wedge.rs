@@ -112,6 +112,19 @@ impl<S: Scalar> Wedge<S> {
         }
     }
 
+    /// The same wedge with every length multiplied by `factor` (a change of units).
+    pub(crate) fn scaled(&self, factor: &S) -> Wedge<S> {
+        let times = |x: &S| x.clone() * factor;
+        Wedge {
+            b0: times(&self.b0),
+            b1: times(&self.b1),
+            source_x: times(&self.source_x),
+            source_y: times(&self.source_y),
+            sigma: times(&self.sigma),
+            ..self.clone()
+        }
+    }
+
     /// The smallest distance the wedge gives on its range (its priority [SSK+05 §4]).
     pub fn min_distance(&self) -> S {
         let inside =

@@ -10,11 +10,12 @@
 //!   ([`roots::source_gap`]), so that the near-tangencies MMP meets at every pseudo-source
 //!   vertex do not send the whole decision to a finer stage.
 //! - Comparisons and signs of stored values are exact as they stand.
-//! - Two kinds of question are about *constructed* values, which rounding has already moved,
+//! - Three kinds of question are about *constructed* values, which rounding has already moved,
 //!   so an exact answer would only tell how the rounding fell: whether two distances
-//!   `sigma + |s - t|` are equal, and whether a range between two constructed points (crossings,
-//!   ray hits) has a length. Both are answered at the resolution of the constructions
-//!   ([`Resolution`]): closer than that is a tie, and a tie keeps the wedge already on the edge.
+//!   `sigma + |s - t|` are equal, whether a range between two constructed points (crossings,
+//!   ray hits) has a length, and whether a point lies in such a range. They are answered at
+//!   the resolution of the constructions ([`Resolution`]): closer than that is a tie, a tie
+//!   keeps the wedge already on the edge, and a point that close to a range is in it.
 //!
 //! The filter and exact-stage counts of the predicates are reported per run; comparisons of
 //! stored values are exact by themselves and not counted.
@@ -207,9 +208,14 @@ impl Scalar for Adaptive {
         hi.0 - lo.0 > Resolution::EXTENT * scale.0
     }
 
+    /// At the resolution of the range's ends ([`Resolution::EXTENT`]): the ends are
+    /// constructions, and two wedges whose ranges meet at a ray through a vertex (exactly, on
+    /// the surface) meet with a gap or overlap of a few ulps once rounded; a vertex in such a
+    /// gap must still be reached by both.
     #[inline(always)]
-    fn within(x: &Self, lo: &Self, hi: &Self, _scale: &Self) -> bool {
-        x.0 >= lo.0 && x.0 <= hi.0
+    fn within(x: &Self, lo: &Self, hi: &Self, scale: &Self) -> bool {
+        let slack = Resolution::EXTENT * scale.0;
+        x.0 >= lo.0 - slack && x.0 <= hi.0 + slack
     }
 
     /// `A = B = C = 0` holds exactly when the two functions have equal `x`, `|y|` and `sigma`,

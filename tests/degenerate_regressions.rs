@@ -1,0 +1,198 @@
+//! The degenerate inputs of issue 10, each a named regression test in every backend: meshes on
+//! which a backend once returned a wrong distance without a word. Expected values come from the
+//! coordinates (straight lines on flat pieces), never from the engine.
+
+mod common;
+
+use common::edge_graph_dijkstra;
+use exact_geodesics::scalar::{Adaptive, Real};
+use exact_geodesics::{propagate, PropagateOptions, Scalar, SurfacePoint, TriMesh, VertexId};
+
+fn distances<S: Scalar>(mesh: &TriMesh, source: u32) -> Vec<f64> {
+    propagate::<S>(
+        mesh,
+        &[SurfacePoint::Vertex(VertexId(source))],
+        &PropagateOptions::default(),
+    )
+    .expect("valid source")
+    .vertex_distances()
+}
+
+/// The distances from `source` in all three backends, labelled.
+fn every_backend(mesh: &TriMesh, source: u32) -> [(&'static str, Vec<f64>); 3] {
+    [
+        ("f64", distances::<f64>(mesh, source)),
+        ("adaptive", distances::<Adaptive>(mesh, source)),
+        ("exact", distances::<Real>(mesh, source)),
+    ]
+}
+
+fn straight(mesh: &TriMesh, a: u32, b: u32) -> f64 {
+    let (p, q) = (mesh.position(VertexId(a)), mesh.position(VertexId(b)));
+    let d = [0, 1, 2].map(|i| q[i] - p[i]);
+    let m = d.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    if m == 0.0 {
+        return 0.0;
+    }
+    m * d.iter().map(|c| (c / m) * (c / m)).sum::<f64>().sqrt()
+}
+
+fn assert_close(got: f64, want: f64, what: &str) {
+    assert!(
+        (got - want).abs() <= 1e-12 * want.abs(),
+        "{what}: got {got}, want {want}"
+    );
+}
+
+/// The mesh of finding 1: vertices 0 and 2 at the same point, so that vertex 0's only faces
+/// are the two degenerate ones and the way on runs through its twin.
+fn coincident_twin() -> TriMesh {
+    TriMesh::new(
+        vec![
+            [0.4, 0.2, 0.0],
+            [0.5, 0.1, 0.0],
+            [0.4, 0.2, 0.0],
+            [0.5, 0.30000000000000004, 0.0],
+            [0.6000000000000001, 0.2, 0.0],
+            [0.4, 0.30000000000000004, 0.0],
+        ],
+        vec![[1, 2, 0], [0, 2, 5], [1, 4, 2], [2, 4, 3], [2, 3, 5]],
+    )
+    .expect("usable mesh")
+}
+
+#[test]
+fn coincident_vertex_sends_wedges_into_its_twin_s_faces_in_every_backend() {
+    let mesh = coincident_twin();
+    // Flat, and every vertex sees vertex 2 (= vertex 0) straight within the fan around it.
+    for (backend, d) in every_backend(&mesh, 0) {
+        for v in 0..6 {
+            assert_close(
+                d[v as usize],
+                straight(&mesh, 0, v),
+                &format!("{backend} d(v{v})"),
+            );
+        }
+    }
+}
+
+#[test]
+fn coincident_vertices_give_symmetric_distances_within_the_edge_graph_bound() {
+    let mesh = coincident_twin();
+    for source in 0..6u32 {
+        let bound = edge_graph_dijkstra(&mesh, source as usize);
+        for (backend, d) in every_backend(&mesh, source) {
+            for v in 0..6u32 {
+                let got = d[v as usize];
+                assert!(
+                    got <= bound[v as usize] * (1.0 + 1e-12),
+                    "{backend} d(v{source}, v{v}) = {got} above the edge path {}",
+                    bound[v as usize]
+                );
+                assert!(got >= straight(&mesh, source, v) * (1.0 - 1e-12));
+                let back = distances::<f64>(&mesh, v)[source as usize];
+                assert!(
+                    (got - back).abs() <= 1e-9 * got.max(back),
+                    "{backend} asymmetric"
+                );
+            }
+        }
+    }
+}
+
+/// Finding 2's flat 4 x 2 grid of unit squares, each split by its diagonal from (i+1, j) to
+/// (i, j+1): the straight path from (0, 0) to (4, 2) runs exactly through the vertex (2, 1).
+fn grid_with_diagonals() -> TriMesh {
+    let index = |i: u32, j: u32| j * 5 + i;
+    let positions = (0..3)
+        .flat_map(|j| (0..5).map(move |i| [f64::from(i), f64::from(j), 0.0]))
+        .collect();
+    let mut faces = Vec::new();
+    for j in 0..2 {
+        for i in 0..4 {
+            let (a, b, c, d) = (
+                index(i, j),
+                index(i + 1, j),
+                index(i + 1, j + 1),
+                index(i, j + 1),
+            );
+            faces.push([a, b, d]);
+            faces.push([b, c, d]);
+        }
+    }
+    TriMesh::new(positions, faces).expect("usable mesh")
+}
+
+#[test]
+fn straight_path_through_a_flat_vertex_in_every_backend() {
+    let mesh = grid_with_diagonals();
+    let want = 20f64.sqrt();
+    for (source, target) in [(0u32, 14u32), (14, 0)] {
+        for (backend, d) in every_backend(&mesh, source) {
+            assert_close(
+                d[target as usize],
+                want,
+                &format!("{backend} d(v{source}, v{target})"),
+            );
+        }
+    }
+    let field = propagate::<Adaptive>(
+        &mesh,
+        &[SurfacePoint::Vertex(VertexId(0))],
+        &PropagateOptions::default(),
+    )
+    .expect("valid source");
+    let path = field
+        .trace_back(&SurfacePoint::Vertex(VertexId(14)))
+        .expect("a reached vertex has a path");
+    assert_close(path.length(), want, "adaptive path length");
+}
+
+/// A right triangle with legs `leg` at the origin.
+fn right_triangle(leg: f64) -> TriMesh {
+    TriMesh::new(
+        vec![[0.0, 0.0, 0.0], [leg, 0.0, 0.0], [0.0, leg, 0.0]],
+        vec![[0, 1, 2]],
+    )
+    .expect("usable mesh")
+}
+
+#[test]
+fn tiny_and_huge_triangles_keep_their_distances_in_every_backend() {
+    for leg in [1e-80, 1e-150, 1e-200, 1e-300, 1e78, 1e200, 1e300] {
+        let mesh = right_triangle(leg);
+        assert!(
+            mesh.validation().zero_area_faces.is_empty(),
+            "legs {leg}: no zero-area face"
+        );
+        for (backend, d) in every_backend(&mesh, 0) {
+            assert_close(d[1], leg, &format!("{backend} legs {leg}: d(v1)"));
+            assert_close(d[2], leg, &format!("{backend} legs {leg}: d(v2)"));
+        }
+        for (backend, d) in every_backend(&mesh, 1) {
+            let hypotenuse = leg * 2f64.sqrt();
+            assert_close(
+                d[2],
+                hypotenuse,
+                &format!("{backend} legs {leg}: d(v1, v2)"),
+            );
+        }
+    }
+}
+
+#[test]
+fn a_vertex_near_f64_max_leaves_the_others_reachable() {
+    let mesh = TriMesh::new(
+        vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 1e308]],
+        vec![[0, 1, 2]],
+    )
+    .expect("usable mesh");
+    assert!(mesh.validation().zero_area_faces.is_empty());
+    // The unit edge is 1e-308 of the model: beyond f64's squares, and said so.
+    assert_eq!(mesh.validation().float_unresolved_edges.len(), 1);
+    for (backend, d) in every_backend(&mesh, 0) {
+        assert!(d.iter().all(|x| x.is_finite()), "{backend}: {d:?}");
+        assert_close(d[2], straight(&mesh, 0, 2), &format!("{backend} d(v2)"));
+    }
+    assert_close(distances::<Real>(&mesh, 0)[1], 1.0, "exact d(v1)");
+}
