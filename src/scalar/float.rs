@@ -19,8 +19,10 @@ impl FloatTolerance {
     /// parallel and they cannot carry a distance their neighbours do not.
     pub const EXTENT: f64 = 1e-11;
     /// Slack, as a fraction of the edge length, when asking whether a point lies in a wedge's
-    /// range; covers the rounding of unfolded coordinates.
-    pub const WITHIN: f64 = 1e-9;
+    /// range; covers the rounding of unfolded coordinates (thousands of ulps). Larger slack
+    /// lets a wedge claim vertices beyond its range: on slivers a thousand times longer than
+    /// the distances at hand, 1e-9 gave distances 2 % short.
+    pub const WITHIN: f64 = 1e-12;
     /// Two wedges whose pseudo-sources and sigmas agree to this fraction of the range's scale
     /// have the same distance function: eq. (2) has infinitely many solutions.
     pub const SAME_SOURCE: f64 = 1e-12;
