@@ -2,7 +2,7 @@
 //! of wedges on an edge of length 4, in the f64 and the exact backend.
 
 use exact_geodesics::mmp::intersect;
-use exact_geodesics::scalar::{Field, Real, Ring, Scalar};
+use exact_geodesics::scalar::{BisectorRoots, Field, Real, Ring, Scalar};
 use exact_geodesics::{EdgeId, PseudoSource, Side, Wedge};
 
 const LENGTH: f64 = 4.0;
@@ -84,6 +84,28 @@ fn two_solutions<S: Scalar>() {
     assert!(((d * d + 1.0).sqrt() - 0.5 - (d * d + 0.01).sqrt()).abs() < 1e-12);
 }
 
+fn touching_solution<S: Scalar>() {
+    // The new pseudo-source lies straight between the old one and the edge, at the distance
+    // the old one gives it (a zero source gap): its distance 1 + sqrt((t-2)^2 + 1) touches
+    // sqrt((t-2)^2 + 4) at t = 2 and exceeds it elsewhere. One solution, which is no crossing:
+    // the existing wedge keeps the whole range.
+    let (pieces, counts) = meet::<S>(
+        wedge(0, (0.0, LENGTH), (2.0, 2.0, 0.0)),
+        wedge(1, (0.0, LENGTH), (2.0, 1.0, 1.0)),
+    );
+    assert_pieces(&pieces, &[(0, 0.0, LENGTH)]);
+    assert_eq!(counts, [0, 1, 0, 0]);
+    let (a, b) = (
+        wedge::<S>(0, (0.0, LENGTH), (2.0, 2.0, 0.0)).distance_function(),
+        wedge::<S>(1, (0.0, LENGTH), (2.0, 1.0, 1.0)).distance_function(),
+    );
+    let roots = S::bisector_roots(&a, &b, &S::from_f64(0.0), &S::from_f64(LENGTH));
+    assert!(
+        matches!(&roots, BisectorRoots::Touch(t) if (t.to_f64() - 2.0).abs() < 1e-9),
+        "{roots:?}"
+    );
+}
+
 fn infinitely_many_solutions<S: Scalar>() {
     // Mirror images across the edge (tau differs): one distance function, A = B = C = 0; the
     // wedge already there stays (step 2.3.2).
@@ -110,6 +132,7 @@ fn all_cases<S: Scalar>() {
     zero_solutions::<S>();
     one_solution::<S>();
     two_solutions::<S>();
+    touching_solution::<S>();
     infinitely_many_solutions::<S>();
     range_covered::<S>();
 }

@@ -138,6 +138,7 @@ pub fn eq2_line<S: Scalar>(names: (&str, &str), pair: &Option<Eq2Pair<S>>) -> St
     let roots = match &pair.roots {
         BisectorRoots::None => "no solution".to_string(),
         BisectorRoots::One(t) => format!("one solution at {:.4}", t.to_f64()),
+        BisectorRoots::Touch(t) => format!("one solution at {:.4} (touching)", t.to_f64()),
         BisectorRoots::Two(t, u) => {
             format!("two solutions at {:.4}, {:.4}", t.to_f64(), u.to_f64())
         }

@@ -102,8 +102,12 @@ impl<S: Ring> Eq2Terms<S> {
 pub enum BisectorRoots<S> {
     /// The wedges do not meet inside the range (Example 2, or one wedge better throughout).
     None,
-    /// One crossing point.
+    /// One crossing point: the lower wedge changes there.
     One(S),
+    /// One point where the distance functions touch without crossing (a double root of
+    /// eq. (2): one pseudo-source seen straight from the other, at the distance the other
+    /// gives it); the same wedge is lower on both sides.
+    Touch(S),
     /// Two crossing points, in increasing order; the pseudo-sources then lie on different
     /// sides of the edge (Property 1).
     Two(S, S),
@@ -117,6 +121,7 @@ impl<S> BisectorRoots<S> {
         match self {
             BisectorRoots::None => BisectorRoots::None,
             BisectorRoots::One(r) => BisectorRoots::One(f(r)),
+            BisectorRoots::Touch(r) => BisectorRoots::Touch(f(r)),
             BisectorRoots::Two(r, s) => BisectorRoots::Two(f(r), f(s)),
             BisectorRoots::Infinite => BisectorRoots::Infinite,
         }
@@ -126,7 +131,7 @@ impl<S> BisectorRoots<S> {
     pub fn case(&self) -> Eq2Case {
         match self {
             BisectorRoots::None => Eq2Case::None,
-            BisectorRoots::One(_) => Eq2Case::One,
+            BisectorRoots::One(_) | BisectorRoots::Touch(_) => Eq2Case::One,
             BisectorRoots::Two(..) => Eq2Case::Two,
             BisectorRoots::Infinite => Eq2Case::Infinite,
         }

@@ -12,9 +12,10 @@ pub struct FloatTolerance;
 
 impl FloatTolerance {
     /// Two distances closer than this (relative) are a tie, and a tie keeps the wedge already on
-    /// the edge. Chosen well above the rounding error of `sigma + sqrt(..)` chains of a few
-    /// hundred faces (~1e-14) and well below the 1e-9 agreement we promise.
-    pub const DISTANCE: f64 = 1e-12;
+    /// the edge. Above the rounding error of `sigma + sqrt(..)` chains of a few hundred faces
+    /// (~1e-15), and small: a tie decides who owns a whole piece of an edge, so on slivers whose
+    /// edges are 1e8 times the distances at hand, a tie of 1e-12 gave away pieces worth 20 %.
+    pub const DISTANCE: f64 = 1e-14;
     /// Wedges shorter than this fraction of their edge are dropped: their rays are numerically
     /// parallel and they cannot carry a distance their neighbours do not.
     pub const EXTENT: f64 = 1e-11;
@@ -117,16 +118,23 @@ impl Scalar for f64 {
         let solves_eq1 =
             |t: f64| f(t).abs() <= FloatTolerance::ROOT_RESIDUAL * a.at(&t).max(b.at(&t));
         let eq2 = Eq2Coefficients::new(a, b, &lo);
-        let (candidates, count) = quadratic_roots(eq2.a, eq2.b, eq2.c, hi - lo);
+        let (candidates, count, double) = quadratic_roots(eq2.a, eq2.b, eq2.c, hi - lo);
         let mut roots = [0.0; 2];
         let mut found = 0;
+        let mut touching = double;
         for &t in &candidates[..count] {
             let t = t + lo;
-            let distinct = found == 0 || t - roots[found - 1] > FloatTolerance::EXTENT * scale;
-            if t > lo && t < hi && distinct && solves_eq1(t) {
-                roots[found] = t;
-                found += 1;
+            if t <= lo || t >= hi || !solves_eq1(t) {
+                continue;
             }
+            if found > 0 && t - roots[found - 1] <= FloatTolerance::EXTENT * scale {
+                // Two roots closer than the resolution: a touching point, or a crossing beside
+                // a root of eq. (2) that eq. (1) only nearly solves; the ends tell below.
+                touching = true;
+                continue;
+            }
+            roots[found] = t;
+            found += 1;
         }
         // Eq. (2) is ill-conditioned when the pseudo-sources nearly coincide; a sign change of
         // eq. (1) across the range proves a crossing, so find it directly if eq. (2) missed it.
@@ -135,10 +143,35 @@ impl Scalar for f64 {
             roots[0] = bisect(f, lo, hi, f_lo);
             found = 1;
         }
-        match roots[..found] {
+        // Rounded roots may be extraneous (eq. (2) squares eq. (1) twice) or mislocated where
+        // eq. (2) is ill-conditioned: keep a root as a crossing only where eq. (1) changes
+        // sign between the middles of the pieces beside it, as a touching point where a
+        // double root leaves the sign as it is. A tie counts as either sign.
+        let side = |from: f64, to: f64| {
+            let mid = 0.5 * (from + to);
+            compare_with_tie(a.at(&mid), b.at(&mid), FloatTolerance::DISTANCE)
+        };
+        let mut kept = [(0.0, false); 2];
+        let mut count = 0;
+        let mut start = lo;
+        for (i, &r) in roots[..found].iter().enumerate() {
+            let end = if i + 1 < found { roots[i + 1] } else { hi };
+            let (before, after) = (side(start, r), side(r, end));
+            let same = before == after && before != Ordering::Equal;
+            if !same {
+                kept[count] = (r, true);
+                count += 1;
+                start = r;
+            } else if touching && found == 1 {
+                kept[count] = (r, false);
+                count += 1;
+            }
+        }
+        match kept[..count] {
             [] => BisectorRoots::None,
-            [r] => BisectorRoots::One(r),
-            [r, s] => BisectorRoots::Two(r, s),
+            [(r, false)] => BisectorRoots::Touch(r),
+            [(r, true)] => BisectorRoots::One(r),
+            [(r, _), (s, _)] => BisectorRoots::Two(r, s),
             _ => unreachable!("a quadratic has at most two roots"),
         }
     }
@@ -159,30 +192,30 @@ pub(crate) fn compare_with_tie(a: f64, b: f64, relative: f64) -> Ordering {
 }
 
 /// Real roots of `a t^2 + b t + c` in increasing order (the first `count` entries), computed
-/// without cancellation; `width` is the length of the range of interest, which tells when `a`
-/// (or `b`) is negligible.
-fn quadratic_roots(a: f64, b: f64, c: f64, width: f64) -> ([f64; 2], usize) {
+/// without cancellation, and whether the one root is a double root (a tangency); `width` is
+/// the length of the range of interest, which tells when `a` (or `b`) is negligible.
+fn quadratic_roots(a: f64, b: f64, c: f64, width: f64) -> ([f64; 2], usize, bool) {
     let linear_size = b.abs() * width + c.abs();
     if a.abs() * width * width <= f64::EPSILON * linear_size {
         if b == 0.0 || b.abs() * width <= f64::EPSILON * c.abs() {
-            return ([0.0; 2], 0);
+            return ([0.0; 2], 0, false);
         }
-        return ([-c / b, 0.0], 1);
+        return ([-c / b, 0.0], 1, false);
     }
     let disc = b * b - 4.0 * a * c;
     if disc < 0.0 {
         // A tangency rounded to a negative discriminant still touches zero at the vertex.
         if disc >= -8.0 * f64::EPSILON * (b * b).max((4.0 * a * c).abs()) {
-            return ([-b / (2.0 * a), 0.0], 1);
+            return ([-b / (2.0 * a), 0.0], 1, true);
         }
-        return ([0.0; 2], 0);
+        return ([0.0; 2], 0, false);
     }
     let q = -0.5 * (b + b.signum() * disc.sqrt());
     if q == 0.0 {
-        return ([0.0; 2], 1);
+        return ([0.0; 2], 1, true);
     }
     let (r, s) = (q / a, c / q);
-    ([r.min(s), r.max(s)], 2)
+    ([r.min(s), r.max(s)], 2, false)
 }
 
 /// A root of `f` in `(lo, hi)`, given `f(lo) * f(hi) < 0`.

@@ -25,8 +25,11 @@ pub(crate) trait CertifiedSign: Ring {
 pub(crate) enum Crossings<T> {
     None,
     Infinite,
-    /// One solution, with its position from the range's start, exact in `T`.
+    /// One solution where the distance functions cross, with its position from the range's
+    /// start, exact in `T`.
     At(T),
+    /// One solution where they touch without crossing (a double root of eq. (2)).
+    Touch(T),
     /// Eq. (2) has two distinct roots; which of them (smaller, larger) are solutions, with the
     /// sign of `A`, which orders them.
     Quadratic {
@@ -44,6 +47,7 @@ impl<T> Crossings<T> {
             Crossings::None => Crossings::None,
             Crossings::Infinite => Crossings::Infinite,
             Crossings::At(u) => Crossings::At(f(&u)),
+            Crossings::Touch(u) => Crossings::Touch(f(&u)),
             Crossings::Quadratic {
                 eq2,
                 sign_a,
@@ -279,7 +283,14 @@ pub(crate) fn crossings<T: CertifiedSign>(
     };
     match disc {
         Sign::Negative => return Some(Crossings::None),
-        Sign::Zero => return single(-(eq2.b.clone() / &(two.clone() * &eq2.a))),
+        // A double root: the distance functions touch there (a zero gap: one pseudo-source
+        // lies on a straight way from the other) and do not cross.
+        Sign::Zero => {
+            return single(-(eq2.b.clone() / &(two.clone() * &eq2.a))).map(|c| match c {
+                Crossings::At(u) => Crossings::Touch(u),
+                other => other,
+            })
+        }
         Sign::Positive => {}
     }
     let roots = TwoRoots { eq2: &eq2, sa };
@@ -399,6 +410,7 @@ pub(crate) fn into_roots<S: Field>(c: Crossings<S>, lo: &S) -> BisectorRoots<S> 
         Crossings::None => BisectorRoots::None,
         Crossings::Infinite => BisectorRoots::Infinite,
         Crossings::At(u) => BisectorRoots::One(u + lo),
+        Crossings::Touch(u) => BisectorRoots::Touch(u + lo),
         Crossings::Quadratic {
             eq2,
             sign_a,
