@@ -67,10 +67,13 @@ fn min_on<S: Scalar>(d: &SourceDistance<S>, lo: &S, hi: &S, at_lo: &S, at_hi: &S
 /// (`mine`) into pieces, each owned by the better wedge [LZT §4]. Coincident distance
 /// functions keep the existing wedge (step 2.3.2). When one wedge is better at every point of
 /// the range by the bounds of convexity, eq. (2) has no root there and is not solved;
-/// otherwise its roots cut the range. Where the wedges cross is the roots' answer alone: the
-/// lower wedge is asked on one piece (the first whose middle is not a tie) and changes at every
-/// crossing, not at a touching root. A range where every piece is a tie stays with the existing
-/// wedge. Returns the case and whether eq. (2) was solved.
+/// otherwise its roots cut the range, and each piece goes to the wedge better at its middle
+/// (pieces on both sides of a touching root, or of a crossing the backend placed where the
+/// distances agree to its resolution, go to the same wedge and merge). The roots' positions
+/// are constructions: rounded from the coefficients of eq. (2), a near-double root moves far
+/// (1.3 units on an edge of 1e8 in a mixed-magnitude mesh), so owners are not inferred by
+/// alternation from one piece, which would hand that whole stretch to the wrong wedge.
+/// Returns the case and whether eq. (2) was solved.
 fn split_shared_range<S: Scalar>(
     pieces: &mut Vec<Piece<S>>,
     theirs: &SourceDistance<S>,
@@ -97,43 +100,22 @@ fn split_shared_range<S: Scalar>(
     }
     let roots = S::bisector_roots(theirs, mine, &lo, &hi);
     let case = roots.case();
-    // The cuts, and whether the lower wedge changes at each.
-    let (cuts, crosses) = match roots {
-        BisectorRoots::One(r) => ([Some(r), None], [true, false]),
-        BisectorRoots::Touch(r) => ([Some(r), None], [false, false]),
-        BisectorRoots::Two(r, s) => ([Some(r), Some(s)], [true, true]),
-        BisectorRoots::None => ([None, None], [false, false]),
-        BisectorRoots::Infinite => {
-            push_piece(pieces, lo, hi, Owner::Old(id));
-            return (case, true);
-        }
+    let (first, second) = match roots {
+        BisectorRoots::One(r) | BisectorRoots::Touch(r) => (Some(r), None),
+        BisectorRoots::Two(r, s) => (Some(r), Some(s)),
+        BisectorRoots::None | BisectorRoots::Infinite => (None, None),
     };
-    let count = 1 + cuts.iter().flatten().count();
-    let mut bounds = [&lo, &hi, &hi, &hi];
-    for (i, cut) in cuts.iter().flatten().enumerate() {
-        bounds[i + 1] = cut;
-    }
-    bounds[count] = &hi;
     let half = S::from_f64(0.5);
-    let reference = (0..count).find_map(|i| {
-        let mid = (bounds[i].clone() + bounds[i + 1]) * &half;
-        match mine.at(&mid).compare_distance(&theirs.at(&mid)) {
-            Ordering::Equal => None,
-            order => Some((i, order == Ordering::Less)),
-        }
-    });
-    let Some((k, mine_lower_at_k)) = reference else {
-        push_piece(pieces, lo, hi, Owner::Old(id));
-        return (case, true);
-    };
-    for i in 0..count {
-        let crossings = crosses[i.min(k)..i.max(k)].iter().filter(|&&c| c).count();
-        let owner = if mine_lower_at_k == (crossings % 2 == 0) {
+    let mut start = lo;
+    for end in [first, second, Some(hi)].into_iter().flatten() {
+        let mid = (start.clone() + &end) * &half;
+        let owner = if mine.at(&mid).compare_distance(&theirs.at(&mid)) == Ordering::Less {
             Owner::New
         } else {
             Owner::Old(id)
         };
-        push_piece(pieces, bounds[i].clone(), bounds[i + 1].clone(), owner);
+        push_piece(pieces, start, end.clone(), owner);
+        start = end;
     }
     (case, true)
 }
