@@ -264,6 +264,17 @@ impl Topology {
             }
             edge_length.push(scaled_length / unit_scale);
         }
+        let (shortest, longest) = edge_length
+            .iter()
+            .filter(|&&l| l > 0.0)
+            .fold((f64::INFINITY, 0.0f64), |(lo, hi), &l| {
+                (lo.min(l), hi.max(l))
+            });
+        report.edge_length_span = if longest > 0.0 {
+            longest / shortest
+        } else {
+            1.0
+        };
 
         let mut wings = Vec::with_capacity(2 * edges.len());
         for (ei, e) in edges.iter().enumerate() {

@@ -17,6 +17,11 @@ pub struct ValidationReport {
     /// their squared lengths underflow in `f64`, so the `f64` and adaptive backends treat them
     /// as if their ends coincided. The exact backend measures them exactly.
     pub float_unresolved_edges: Vec<EdgeId>,
+    /// The longest edge's length over the shortest (edges of length zero left out; 1 without
+    /// edges). Unfolded positions on an edge carry errors of about `f64::EPSILON` times its
+    /// length, so the `f64` and adaptive backends' distances are good to about
+    /// `f64::EPSILON * edge_length_span` relative where short distances cross long edges.
+    pub edge_length_span: f64,
     /// Vertices that no face uses; they are unreachable from any source on a face.
     pub unreferenced_vertices: Vec<VertexId>,
     /// Vertices whose incident faces form more than one fan (a "bowtie"). Geodesics may pass
@@ -32,6 +37,10 @@ pub struct ValidationReport {
 }
 
 impl ValidationReport {
+    /// Edge length spans beyond this get a warning: the float backends' distances may then
+    /// be off by more than 1e-10 relative.
+    pub const WIDE_SPAN: f64 = 1e6;
+
     /// Human-readable warnings, one per kind of condition, empty for a clean closed mesh.
     pub fn warnings(&self) -> Vec<String> {
         let mut out = Vec::new();
@@ -47,6 +56,13 @@ impl ValidationReport {
                 "{} edge(s) shorter than 2^-500 of the model's size, first {}: the f64 and adaptive backends cannot resolve them (use --backend exact)",
                 self.float_unresolved_edges.len(),
                 self.float_unresolved_edges[0]
+            ));
+        }
+        if self.edge_length_span > Self::WIDE_SPAN {
+            out.push(format!(
+                "edge lengths span a factor of {:.1e}: f64 and adaptive distances may be off by up to about {:.0e} relative (use --backend exact)",
+                self.edge_length_span,
+                f64::EPSILON * self.edge_length_span
             ));
         }
         if !self.unreferenced_vertices.is_empty() {
