@@ -12,6 +12,7 @@
 #![deny(missing_docs, rustdoc::broken_intra_doc_links)]
 
 pub mod benchmark_model;
+pub mod degeneracy;
 pub mod mesh;
 pub mod mmp;
 pub mod paper;

@@ -3,6 +3,7 @@
 #![allow(dead_code)] // Each test binary uses a different part of this module.
 
 pub mod cli;
+pub mod strategies;
 
 use exact_geodesics::mesh::shapes::SplitMix64;
 use exact_geodesics::{FaceId, SurfacePoint, TriMesh, VertexId};

@@ -4,6 +4,7 @@
 
 mod benchmark_model;
 mod compare;
+mod degeneracy;
 mod distance;
 mod load;
 mod path;
@@ -55,6 +56,9 @@ enum Command {
     /// The regions of one face, each closest to one image of a pseudo-source, and their
     /// bisectors [LZT Property 4, Fig. 15]; optionally drawn as SVG.
     Subdivision(subdivision::SubdivisionArgs),
+    /// Runs the degenerate-mesh corpus and checks the invariants of every distance (JSON
+    /// summary; fails if any is broken).
+    Degeneracy(degeneracy::DegeneracyArgs),
 }
 
 /// The number type the engine runs on.
@@ -201,6 +205,7 @@ fn main() -> ExitCode {
         Command::BenchmarkModel(args) => benchmark_model::run(args),
         Command::Verify(args) => verify::run(args),
         Command::Subdivision(args) => subdivision::run(args),
+        Command::Degeneracy(args) => degeneracy::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
