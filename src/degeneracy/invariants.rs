@@ -304,7 +304,7 @@ fn check_vertices<S: Scalar, R: Scalar>(
         };
         let p = |v: VertexId| mesh.position(v);
         let straight = distance_in::<S>(p(a), p(v));
-        if !at_least(own, &straight, tolerances.bounds) {
+        if !at_least(&own, &straight, tolerances.bounds) {
             findings.add(ViolationKind::BelowStraightLine, || {
                 format!(
                     "from {a}: d({v}) = {d:e} < straight line {:e}",
@@ -313,7 +313,7 @@ fn check_vertices<S: Scalar, R: Scalar>(
             });
         }
         let along = run.paths.length_in::<S>(mesh, v).expect("reached");
-        if !at_most(own, &along, tolerances.bounds) {
+        if !at_most(&own, &along, tolerances.bounds) {
             findings.add(ViolationKind::AboveEdgePath, || {
                 format!("from {a}: d({v}) = {d:e} > edge path {:e}", along.to_f64())
             });
