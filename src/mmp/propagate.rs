@@ -122,6 +122,8 @@ pub(crate) struct VertexDistance<S> {
     pub(crate) distance: S,
     pub(crate) approx: f64,
     pub(crate) source: usize,
+    /// The vertex at the same place whose distance this is, across an edge of length zero.
+    pub(crate) twin: Option<VertexId>,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -295,6 +297,19 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// Lowers a vertex's distance if `distance` is better; a vertex that may bend geodesics then
     /// waits in the queue to act as a pseudo-source.
     pub(crate) fn improve_vertex(&mut self, v: VertexId, distance: S, source: usize) {
+        self.improve_vertex_via(v, distance, source, None);
+    }
+
+    /// [`Self::improve_vertex`], reached straight or across an edge of length zero from `twin`;
+    /// a vertex's twins (ends of its edges of length zero, the same point of the surface) take
+    /// its distance as it is, not a rounded copy of it.
+    fn improve_vertex_via(
+        &mut self,
+        v: VertexId,
+        distance: S,
+        source: usize,
+        twin: Option<VertexId>,
+    ) {
         let slot = &mut self.vertices[v.index()];
         match slot {
             Some(known) if distance.compare_distance(&known.distance) != Ordering::Less => return,
@@ -303,9 +318,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
         }
         let approx = distance.to_f64();
         *slot = Some(VertexDistance {
-            distance,
+            distance: distance.clone(),
             approx,
             source,
+            twin,
         });
         if self.mesh.may_bend_geodesics(v) {
             self.pending_emission[v.index()] = true;
@@ -313,6 +329,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 key: approx,
                 kind: EventKind::Vertex(v),
             });
+        }
+        let mesh = self.mesh;
+        for &e in mesh.vertex_edges(v) {
+            if self.unfolding.is_zero_length(e) {
+                let other = mesh.edge(e).other(v).expect("an edge of the vertex");
+                self.improve_vertex_via(other, distance.clone(), source, Some(v));
+            }
         }
     }
 
@@ -336,7 +359,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 for f in self.mesh.edge(edge).faces.into_iter().flatten() {
                     for g in self.mesh.face_edges(f) {
                         if g != edge {
-                            self.emit_from_point(&p, f, g, source, k);
+                            self.emit_from_point(&p, f, g, S::zero(), source, k);
                         }
                     }
                 }
@@ -344,17 +367,19 @@ impl<'m, S: Scalar> Engine<'m, S> {
             SurfacePoint::Face { face, .. } => {
                 let p = self.unfolding.position(self.mesh, point);
                 for g in self.mesh.face_edges(face) {
-                    self.emit_from_point(&p, face, g, source, k);
+                    self.emit_from_point(&p, face, g, S::zero(), source, k);
                 }
             }
         }
     }
 
+    /// A wedge on edge `g` of `face` from the point `p` of the face's closure, at `sigma`.
     fn emit_from_point(
         &mut self,
         p: &[S; 3],
         face: crate::mesh::FaceId,
         g: EdgeId,
+        sigma: S,
         source: PseudoSource,
         k: usize,
     ) {
@@ -362,11 +387,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let Some(at) = self.unfolding.planar(self.mesh, g, p) else {
             return; // An edge of length zero carries no wedge.
         };
-        self.add_wedge(g, at, Side::from_index(side), S::zero(), source, k);
+        self.add_wedge(g, at, Side::from_index(side), sigma, source, k);
     }
 
     /// The wedges of a vertex acting as a (pseudo-)source [MMP87, SSK+05 §4]: across the edge
-    /// opposite it in each incident face, and along each incident edge.
+    /// opposite it in each incident face, and along each incident edge. A vertex lying inside
+    /// its opposite edge (the middle corner of a degenerate face) is a point of that edge as
+    /// well, and sends wedges into the face beyond it as a source on an edge does.
     fn emit_from_vertex(&mut self, v: VertexId, sigma: S, source: PseudoSource, k: usize) {
         let mesh = self.mesh;
         for &f in mesh.vertex_faces(v) {
@@ -377,6 +404,19 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let Some((x, y)) = self.unfolding.apex(g, side).cloned() else {
                 continue;
             };
+            if y.sign() == Sign::Zero
+                && x.sign() == Sign::Positive
+                && x.compare(self.unfolding.length(g)) == Ordering::Less
+            {
+                if let Some(beyond) = mesh.edge(g).faces[1 - side] {
+                    let p = self.unfolding.position(mesh, &SurfacePoint::Vertex(v));
+                    for h in mesh.face_edges(beyond) {
+                        if h != g {
+                            self.emit_from_point(&p, beyond, h, sigma.clone(), source, k);
+                        }
+                    }
+                }
+            }
             self.add_wedge(
                 g,
                 Planar { x, y },

@@ -105,6 +105,11 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     if let Some(k) = self.source_at_vertex(v) {
                         return Ok(self.finish(simplices, distance, k));
                     }
+                    // Reached across an edge of length zero: the path goes on from the twin.
+                    if let Some(twin) = self.vertices[v.index()].as_ref().and_then(|d| d.twin) {
+                        via = Via::Vertex(twin);
+                        continue;
+                    }
                     via = self
                         .arrival_at_vertex(v)
                         .ok_or(TraceError::Unreachable)?
@@ -255,6 +260,14 @@ impl<S: Scalar> GeodesicField<'_, S> {
         if at.y.sign() == Sign::Zero {
             // On the edge itself: the way to the pseudo-source starts in the face on its side.
             let face = e.faces[w.tau.index()].ok_or_else(lost)?;
+            // A vertex inside the edge (the middle corner of a degenerate face) is also that
+            // point of the edge, which the face beyond has in its closure.
+            if let Some(SurfacePoint::Vertex(v)) = simplices.last() {
+                if !e.vertices.contains(v) {
+                    let point = edge_point(edge, &at.x, self.unfolding.length(edge));
+                    push_point(simplices, point);
+                }
+            }
             return Ok(Step::Walk(Walk {
                 edge,
                 face,
