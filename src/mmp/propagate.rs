@@ -7,7 +7,7 @@ use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::unfold::{FaceLayout, Planar, Unfolding};
 use super::wedge::{PseudoSource, Side, Wedge};
-use crate::mesh::{EdgeId, TriMesh, VertexId};
+use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
 use crate::scalar::{Scalar, Sign, Site};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -343,10 +343,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
     fn emit_source(&mut self, k: usize, point: &SurfacePoint) {
         let source = PseudoSource::Source(k);
         match *point {
-            SurfacePoint::Vertex(v) => {
-                self.improve_vertex(v, S::zero(), k);
-                self.emit_from_vertex(v, S::zero(), source, k);
-                self.pending_emission[v.index()] = false;
+            SurfacePoint::Vertex(v) => self.emit_source_vertex(v, k),
+            // A point of an edge whose ends coincide is both of them.
+            SurfacePoint::Edge { edge, .. } if self.unfolding.is_zero_length(edge) => {
+                self.emit_source_vertex(self.mesh.edge(edge).vertices[0], k)
             }
             SurfacePoint::Edge { edge, t } => {
                 let length = self.unfolding.length(edge).clone();
@@ -356,38 +356,55 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 };
                 self.add_wedge(edge, on_edge, Side::First, S::zero(), source, k);
                 let p = self.unfolding.position(self.mesh, point);
-                for f in self.mesh.edge(edge).faces.into_iter().flatten() {
-                    for g in self.mesh.face_edges(f) {
-                        if g != edge {
-                            self.emit_from_point(&p, f, g, S::zero(), source, k);
-                        }
-                    }
-                }
+                let faces: Vec<FaceId> = self.mesh.edge(edge).faces.into_iter().flatten().collect();
+                self.emit_from_point(&p, faces, Vec::new(), S::zero(), source, k);
             }
             SurfacePoint::Face { face, .. } => {
                 let p = self.unfolding.position(self.mesh, point);
-                for g in self.mesh.face_edges(face) {
-                    self.emit_from_point(&p, face, g, S::zero(), source, k);
-                }
+                self.emit_from_point(&p, vec![face], Vec::new(), S::zero(), source, k);
             }
         }
     }
 
-    /// A wedge on edge `g` of `face` from the point `p` of the face's closure, at `sigma`.
+    fn emit_source_vertex(&mut self, v: VertexId, k: usize) {
+        self.improve_vertex(v, S::zero(), k);
+        self.emit_from_vertex(v, S::zero(), PseudoSource::Source(k), k);
+        self.pending_emission[v.index()] = false;
+    }
+
+    /// Wedges at `sigma` from the point `p` onto every edge of `faces` (which contain it in
+    /// their closure). Where `p` lies inside one of those edges (an edge through a degenerate
+    /// face), the face beyond that edge contains it too and gets its wedges, and so on; faces
+    /// in `done` are left out.
     fn emit_from_point(
         &mut self,
         p: &[S; 3],
-        face: crate::mesh::FaceId,
-        g: EdgeId,
+        mut faces: Vec<FaceId>,
+        mut done: Vec<FaceId>,
         sigma: S,
         source: PseudoSource,
         k: usize,
     ) {
-        let side = self.mesh.edge(g).side_of(face).expect("edge of the face");
-        let Some(at) = self.unfolding.planar(self.mesh, g, p) else {
-            return; // An edge of length zero carries no wedge.
-        };
-        self.add_wedge(g, at, Side::from_index(side), sigma, source, k);
+        let mesh = self.mesh;
+        done.extend(faces.iter().copied());
+        while let Some(f) = faces.pop() {
+            for g in mesh.face_edges(f) {
+                let side = mesh.edge(g).side_of(f).expect("edge of the face");
+                // An edge of length zero carries no wedge.
+                let Some(at) = self.unfolding.planar(mesh, g, p) else {
+                    continue;
+                };
+                if self.unfolding.is_inside(g, &at) {
+                    for beyond in mesh.edge(g).faces.into_iter().flatten() {
+                        if !done.contains(&beyond) {
+                            done.push(beyond);
+                            faces.push(beyond);
+                        }
+                    }
+                }
+                self.add_wedge(g, at, Side::from_index(side), sigma.clone(), source, k);
+            }
+        }
     }
 
     /// The wedges of a vertex acting as a (pseudo-)source [MMP87, SSK+05 §4]: across the edge
@@ -396,6 +413,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// well, and sends wedges into the face beyond it as a source on an edge does.
     fn emit_from_vertex(&mut self, v: VertexId, sigma: S, source: PseudoSource, k: usize) {
         let mesh = self.mesh;
+        let mut beyond = Vec::new();
         for &f in mesh.vertex_faces(v) {
             let corner = mesh.face(f).iter().position(|&c| c == v).expect("corner");
             let g = mesh.face_edges(f)[(corner + 1) % 3];
@@ -404,27 +422,11 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let Some((x, y)) = self.unfolding.apex(g, side).cloned() else {
                 continue;
             };
-            if y.sign() == Sign::Zero
-                && x.sign() == Sign::Positive
-                && x.compare(self.unfolding.length(g)) == Ordering::Less
-            {
-                if let Some(beyond) = mesh.edge(g).faces[1 - side] {
-                    let p = self.unfolding.position(mesh, &SurfacePoint::Vertex(v));
-                    for h in mesh.face_edges(beyond) {
-                        if h != g {
-                            self.emit_from_point(&p, beyond, h, sigma.clone(), source, k);
-                        }
-                    }
-                }
+            let at = Planar { x, y };
+            if self.unfolding.is_inside(g, &at) {
+                beyond.extend(mesh.edge(g).faces[1 - side]);
             }
-            self.add_wedge(
-                g,
-                Planar { x, y },
-                Side::from_index(side),
-                sigma.clone(),
-                source,
-                k,
-            );
+            self.add_wedge(g, at, Side::from_index(side), sigma.clone(), source, k);
         }
         for &g in mesh.vertex_edges(v) {
             let x = if mesh.edge(g).vertices[0] == v {
@@ -434,6 +436,11 @@ impl<'m, S: Scalar> Engine<'m, S> {
             };
             let at = Planar { x, y: S::zero() };
             self.add_wedge(g, at, Side::First, sigma.clone(), source, k);
+        }
+        if !beyond.is_empty() {
+            let p = self.unfolding.position(mesh, &SurfacePoint::Vertex(v));
+            let own = mesh.vertex_faces(v).to_vec();
+            self.emit_from_point(&p, beyond, own, sigma, source, k);
         }
     }
 

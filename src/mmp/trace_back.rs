@@ -408,13 +408,22 @@ impl<S: Scalar> GeodesicField<'_, S> {
         })
     }
 
-    /// Whether the pseudo-source is a corner of the face, or the source lies in its closure.
+    /// Whether the pseudo-source lies in the closure of the face: a corner, a point inside one
+    /// of its edges (a vertex in the middle of a degenerate face), or the source's own face.
     fn face_contains(&self, face: FaceId, target: PseudoSource) -> bool {
         let point = match target {
             PseudoSource::Vertex(v) => SurfacePoint::Vertex(v),
             PseudoSource::Source(k) => self.sources[k],
         };
-        point.faces(self.mesh).contains(&face)
+        if point.faces(self.mesh).contains(&face) {
+            return true;
+        }
+        let p = self.unfolding.position(self.mesh, &point);
+        self.mesh.face_edges(face).into_iter().any(|g| {
+            self.unfolding
+                .planar(self.mesh, g, &p)
+                .is_some_and(|at| self.unfolding.is_inside(g, &at))
+        })
     }
 }
 

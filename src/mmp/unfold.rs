@@ -161,6 +161,13 @@ impl<S: Scalar> Unfolding<S> {
         EdgeFrame::new(mesh, v0, v1).map(|frame| frame.planar(p))
     }
 
+    /// Whether a point (in the frame of edge `e`) lies on the edge strictly between its ends.
+    pub(crate) fn is_inside(&self, e: EdgeId, at: &Planar<S>) -> bool {
+        at.y.sign() == Sign::Zero
+            && at.x.sign() == Sign::Positive
+            && at.x.compare(self.length(e)) == Ordering::Less
+    }
+
     /// A surface point's position in space, in scaled coordinates.
     pub(crate) fn position(&self, mesh: &TriMesh, point: &SurfacePoint) -> [S; 3] {
         let p = |v: VertexId| vertex_point::<S>(mesh, v);
