@@ -324,7 +324,10 @@ impl<S: Scalar> GeodesicField<'_, S> {
         budget: usize,
     ) -> Result<WalkEnd, TraceError> {
         for _ in 0..budget {
-            if self.face_contains(walk.face, target) {
+            if let Some(points) = self.closure_path(walk.face, target) {
+                for point in points {
+                    push_point(simplices, point);
+                }
                 return Ok(WalkEnd::PseudoSource);
             }
             let side = self
@@ -408,22 +411,52 @@ impl<S: Scalar> GeodesicField<'_, S> {
         })
     }
 
-    /// Whether the pseudo-source lies in the closure of the face: a corner, a point inside one
-    /// of its edges (a vertex in the middle of a degenerate face), or the source's own face.
-    fn face_contains(&self, face: FaceId, target: PseudoSource) -> bool {
+    /// Whether the pseudo-source lies in the closure of the face: a corner, the source's own
+    /// face, or a point inside one of its edges (a vertex in the middle of a degenerate face).
+    /// In the last case, the way on to a face of the pseudo-source's own (through the
+    /// degenerate faces whose edges contain it, all at the same place) as edge points.
+    fn closure_path(&self, face: FaceId, target: PseudoSource) -> Option<Vec<SurfacePoint>> {
         let point = match target {
             PseudoSource::Vertex(v) => SurfacePoint::Vertex(v),
             PseudoSource::Source(k) => self.sources[k],
         };
-        if point.faces(self.mesh).contains(&face) {
-            return true;
+        let own = point.faces(self.mesh);
+        if own.contains(&face) {
+            return Some(Vec::new());
         }
         let p = self.unfolding.position(self.mesh, &point);
-        self.mesh.face_edges(face).into_iter().any(|g| {
-            self.unfolding
-                .planar(self.mesh, g, &p)
-                .is_some_and(|at| self.unfolding.is_inside(g, &at))
-        })
+        // Breadth first over faces joined by edges that contain the point inside.
+        let mut reached: Vec<(FaceId, Option<(usize, SurfacePoint)>)> = vec![(face, None)];
+        let mut next = 0;
+        while next < reached.len() {
+            let (f, _) = reached[next];
+            if own.contains(&f) {
+                let mut points = Vec::new();
+                let mut at = next;
+                while let (_, Some((parent, point))) = reached[at] {
+                    points.push(point);
+                    at = parent;
+                }
+                points.reverse();
+                return Some(points);
+            }
+            for g in self.mesh.face_edges(f) {
+                let Some(on) = self.unfolding.planar(self.mesh, g, &p) else {
+                    continue;
+                };
+                if !self.unfolding.is_inside(g, &on) {
+                    continue;
+                }
+                let here = edge_point(g, &on.x, self.unfolding.length(g));
+                for beyond in self.mesh.edge(g).faces.into_iter().flatten() {
+                    if reached.iter().all(|(r, _)| *r != beyond) {
+                        reached.push((beyond, Some((next, here))));
+                    }
+                }
+            }
+            next += 1;
+        }
+        None
     }
 }
 
