@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::cli::{fails_with, run, stdout};
+use common::cli::{fails_with, refuses, run, stdout};
 use std::path::PathBuf;
 
 fn temp_file(name: &str, text: &str) -> PathBuf {
@@ -329,4 +329,50 @@ fn compare_reports_example1_symmetric_wedges_case_by_case() {
             assert_eq!(f["coefficients"].as_array().expect("A, B, C").len(), 3);
         }
     }
+}
+
+// Bad input (issue 10): a clear error naming the file, line or value; never a panic (exit 101).
+
+#[test]
+fn barycentric_coordinates_near_f64_max_are_refused_not_a_panic() {
+    refuses(
+        &["distance", "gen:cube", "--source", "f:0,1e308,1e308,0"],
+        &[
+            "f:0,1e308,1e308,0",
+            "gen:cube",
+            "must sum to 1",
+            "sum to inf",
+        ],
+    );
+}
+
+#[test]
+fn barycentric_coordinates_must_sum_to_one_on_the_command_line() {
+    refuses(
+        &["distance", "gen:cube", "--source", "f:0,0.2,0.2,0.2"],
+        &[
+            "f:0,0.2,0.2,0.2",
+            "must sum to 1 (within 1e-9)",
+            "sum to 0.6",
+        ],
+    );
+    refuses(
+        &[
+            "path",
+            "gen:cube",
+            "--source",
+            "v:0",
+            "--target",
+            "f:0,1,1,1",
+        ],
+        &["f:0,1,1,1", "sum to 3"],
+    );
+    // Within the tolerance, rounding in typed decimals is accepted.
+    let text = stdout(&run(&[
+        "distance",
+        "gen:cube",
+        "--source",
+        "f:0,0.3333333333,0.3333333333,0.3333333334",
+    ]));
+    assert_eq!(text.lines().count(), 9);
 }

@@ -117,7 +117,7 @@ impl Common {
         let sources = self
             .sources
             .iter()
-            .map(|s| spec::parse_point(&mesh, s))
+            .map(|s| spec::parse_point(&mesh, &self.mesh, s))
             .collect::<Result<Vec<_>, _>>()?;
         if let Some(d) = self.max_distance {
             if d.is_nan() || d < 0.0 {
