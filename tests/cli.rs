@@ -376,3 +376,22 @@ fn barycentric_coordinates_must_sum_to_one_on_the_command_line() {
     ]));
     assert_eq!(text.lines().count(), 9);
 }
+
+#[test]
+fn precision_cap_below_the_first_exact_precision_is_refused() {
+    for cap in ["0", "127", "1048577"] {
+        refuses(
+            &[
+                "distance",
+                "gen:cube",
+                "--source",
+                "v:0",
+                "--backend",
+                "exact",
+                "--precision-cap",
+                cap,
+            ],
+            &["--precision-cap", cap, "128..=1048576"],
+        );
+    }
+}

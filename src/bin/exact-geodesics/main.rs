@@ -15,6 +15,7 @@ mod verify;
 mod wedges;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use exact_geodesics::scalar::exact;
 use exact_geodesics::{
     propagate_with_progress, GeodesicField, PropagateOptions, Scalar, SurfacePoint, TriMesh,
 };
@@ -93,7 +94,12 @@ pub struct Common {
     pub backend: Backend,
     /// Largest precision (bits) the exact backend tries before it records a decision as
     /// uncertified.
-    #[arg(long, default_value_t = exact_geodesics::scalar::exact::DEFAULT_PRECISION_CAP)]
+    #[arg(
+        long,
+        default_value_t = exact::DEFAULT_PRECISION_CAP,
+        value_parser = clap::value_parser!(u32)
+            .range(i64::from(exact::MIN_PRECISION_CAP)..=i64::from(exact::MAX_PRECISION_CAP))
+    )]
     pub precision_cap: u32,
     /// Stop propagating at this distance; farther vertices are reported unreachable (inf).
     #[arg(long)]
@@ -126,7 +132,7 @@ impl Common {
                 ));
             }
         }
-        exact_geodesics::scalar::exact::set_precision_cap(self.precision_cap);
+        exact::set_precision_cap(self.precision_cap).map_err(|e| e.to_string())?;
         Ok(Job {
             mesh,
             sources,

@@ -31,6 +31,7 @@ use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 use std::sync::atomic::{AtomicU32, Ordering as AtomicOrdering};
 use std::sync::Arc;
+use thiserror::Error;
 
 /// The precision cap, in bits, used unless [`set_precision_cap`] says otherwise.
 pub const DEFAULT_PRECISION_CAP: u32 = 8192;
@@ -38,12 +39,46 @@ pub const DEFAULT_PRECISION_CAP: u32 = 8192;
 /// The first precision of the exact stage, in bits.
 const FIRST_PRECISION: u32 = 128;
 
+/// The smallest precision cap, in bits: the exact stage starts at this precision.
+pub const MIN_PRECISION_CAP: u32 = FIRST_PRECISION;
+
+/// The largest precision cap, in bits. Refinement doubles the precision up to the cap and keeps
+/// an enclosure of two MPFR numbers on every node of the expression, so at `2^20` bits a hard
+/// decision already costs 256 KiB per node; a larger cap would exhaust memory before it helped.
+pub const MAX_PRECISION_CAP: u32 = 1 << 20;
+
 static PRECISION_CAP: AtomicU32 = AtomicU32::new(DEFAULT_PRECISION_CAP);
 
+/// A precision cap outside [`MIN_PRECISION_CAP`]`..=`[`MAX_PRECISION_CAP`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Error)]
+#[error("precision cap {bits} is out of range: it must be from {MIN_PRECISION_CAP} to {MAX_PRECISION_CAP} bits")]
+pub struct PrecisionCapError {
+    /// The cap asked for, in bits.
+    pub bits: u32,
+}
+
 /// Sets the largest precision, in bits, at which a sign is sought before the decision is
-/// recorded as uncertified (at least 128). Applies to every thread.
-pub fn set_precision_cap(bits: u32) {
-    PRECISION_CAP.store(bits.max(FIRST_PRECISION), AtomicOrdering::Relaxed);
+/// recorded as uncertified. Applies to every thread.
+///
+/// # Errors
+/// [`PrecisionCapError`] if `bits` is below [`MIN_PRECISION_CAP`] or above
+/// [`MAX_PRECISION_CAP`]; the cap is then left as it was.
+///
+/// # Example
+/// ```
+/// use exact_geodesics::scalar::exact::{precision_cap, set_precision_cap};
+/// set_precision_cap(4096)?;
+/// assert_eq!(precision_cap(), 4096);
+/// assert!(set_precision_cap(0).is_err());
+/// assert_eq!(precision_cap(), 4096);
+/// # Ok::<(), exact_geodesics::scalar::exact::PrecisionCapError>(())
+/// ```
+pub fn set_precision_cap(bits: u32) -> Result<(), PrecisionCapError> {
+    if !(MIN_PRECISION_CAP..=MAX_PRECISION_CAP).contains(&bits) {
+        return Err(PrecisionCapError { bits });
+    }
+    PRECISION_CAP.store(bits, AtomicOrdering::Relaxed);
+    Ok(())
 }
 
 /// The current precision cap, in bits.
@@ -92,7 +127,7 @@ impl Real {
         }
         let cap = precision_cap();
         let zero_bits = refine::zero_bound_bits(node, cap);
-        let mut precision = 2 * FIRST_PRECISION;
+        let mut precision = (2 * FIRST_PRECISION).min(cap);
         loop {
             let (lo, hi) = refine::enclosure(node, precision);
             if lo.cmp0() == Some(Ordering::Greater) {
