@@ -395,3 +395,20 @@ fn precision_cap_below_the_first_exact_precision_is_refused() {
         );
     }
 }
+
+#[test]
+fn empty_mesh_files_are_refused_naming_the_file() {
+    let ply_header = "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n";
+    for (name, text) in [
+        ("empty.obj", ""),
+        ("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"),
+        ("empty.off", "OFF\n0 0 0\n"),
+        ("empty.ply", ply_header),
+    ] {
+        let path = temp_file(name, text);
+        refuses(
+            &["distance", path.to_str().expect("UTF-8"), "--source", "v:0"],
+            &[&format!("{name}: the mesh has no faces")],
+        );
+    }
+}
