@@ -102,11 +102,20 @@ pub struct Common {
     )]
     pub precision_cap: u32,
     /// Stop propagating at this distance; farther vertices are reported unreachable (inf).
-    #[arg(long)]
+    /// A non-negative number; `inf` is no limit.
+    #[arg(long, allow_hyphen_values = true, value_parser = non_negative_distance)]
     pub max_distance: Option<f64>,
     /// Split polygons with more than three corners into triangles instead of refusing them.
     #[arg(long)]
     pub triangulate: bool,
+}
+
+/// Parses `--max-distance`: a number that is not negative (`inf` allowed, NaN not).
+fn non_negative_distance(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(d) if d >= 0.0 => Ok(d),
+        _ => Err("expected a non-negative number (inf for no limit)".to_owned()),
+    }
 }
 
 /// A loaded mesh with parsed sources, ready to propagate.
@@ -125,13 +134,6 @@ impl Common {
             .iter()
             .map(|s| spec::parse_point(&mesh, &self.mesh, s))
             .collect::<Result<Vec<_>, _>>()?;
-        if let Some(d) = self.max_distance {
-            if d.is_nan() || d < 0.0 {
-                return Err(format!(
-                    "--max-distance must be a non-negative number, got {d}"
-                ));
-            }
-        }
         exact::set_precision_cap(self.precision_cap).map_err(|e| e.to_string())?;
         Ok(Job {
             mesh,
