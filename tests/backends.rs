@@ -7,7 +7,7 @@ use exact_geodesics::mesh::shapes::{self, SplitMix64};
 use exact_geodesics::paper::examples::{
     eq2_of, unfold_named, EXAMPLE1, EXAMPLE1_EDGE, EXAMPLE3, EXAMPLE3_EDGE,
 };
-use exact_geodesics::scalar::exact::Certificate;
+use exact_geodesics::scalar::exact::{Certificate, Uncertainty};
 use exact_geodesics::scalar::{
     Adaptive, BisectorRoots, Field, Real, Resolution, Ring, Scalar, Sign,
 };
@@ -88,7 +88,9 @@ fn a_zero_beyond_the_precision_cap_is_reported_uncertified() {
     assert_eq!(sign, Sign::Zero);
     assert_eq!(
         how,
-        Certificate::Uncertified(exact_geodesics::scalar::exact::precision_cap())
+        Certificate::Uncertified(Uncertainty::PrecisionCap(
+            exact_geodesics::scalar::exact::precision_cap()
+        ))
     );
 }
 

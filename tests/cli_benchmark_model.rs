@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::cli::{fails_with, run, stdout};
+use common::cli::{fails_with, refuses, run, stdout};
 use std::path::PathBuf;
 
 fn temp_dir(name: &str) -> PathBuf {
@@ -103,4 +103,30 @@ fn bad_scenes_are_errors_naming_the_problem() {
         "obstacles 0 and 1 overlap",
     );
     fails_with(&["verify", text(&dir.join("missing.json"))], "missing.json");
+}
+
+#[test]
+fn absurd_obstacle_counts_and_wall_rows_are_refused_not_built() {
+    let dir = temp_dir("absurd");
+    // A million obstacles ran for minutes; 10^8 wall rows allocated until memory ran out.
+    refuses(
+        &[
+            "benchmark-model",
+            "--obstacles",
+            "1000000",
+            "--out",
+            text(&dir),
+        ],
+        &["--obstacles", "1000000", "0..=10000"],
+    );
+    refuses(
+        &[
+            "benchmark-model",
+            "--wall-rows",
+            "100000000",
+            "--out",
+            text(&dir),
+        ],
+        &["wall_rows", "100000000 rows", "at most 4194304"],
+    );
 }

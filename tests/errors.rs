@@ -23,6 +23,18 @@ fn non_finite_coordinates_are_refused() {
 }
 
 #[test]
+fn a_mesh_without_faces_is_refused() {
+    assert_eq!(
+        TriMesh::new(triangle(), Vec::new()).err(),
+        Some(MeshError::NoFaces { vertices: 3 })
+    );
+    assert_eq!(
+        TriMesh::new(Vec::new(), Vec::new()).err(),
+        Some(MeshError::NoFaces { vertices: 0 })
+    );
+}
+
+#[test]
 fn out_of_range_and_repeated_indices_are_refused() {
     assert!(matches!(
         TriMesh::new(triangle(), vec![[0, 1, 3]]),

@@ -609,6 +609,46 @@ fn huge_counts_in_small_files_fail_without_allocating() {
 }
 
 #[test]
+fn files_without_faces_are_refused_naming_the_file() {
+    let ply = |vertices: &str, face: &str| {
+        format!("ply\nformat ascii 1.0\nelement vertex {vertices}\nproperty float x\nproperty float y\nproperty float z\nelement {face} 0\nproperty list uchar int vertex_indices\nend_header\n")
+    };
+    let cases = [
+        (String::new(), MeshFormat::Obj, 0),
+        ("# only a comment\n".to_owned(), MeshFormat::Obj, 0),
+        ("v 0 0 0\nv 1 0 0\nv 0 1 0\n".to_owned(), MeshFormat::Obj, 3),
+        ("OFF\n0 0 0\n".to_owned(), MeshFormat::Off, 0),
+        ("OFF\n1 0 0\n0 0 0\n".to_owned(), MeshFormat::Off, 1),
+        (ply("0", "face"), MeshFormat::Ply, 0),
+        // Faces under another element name are skipped like any unknown element.
+        (
+            ply("3", "faces").replace("0\nproperty list", "1\nproperty list")
+                + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+            MeshFormat::Ply,
+            3,
+        ),
+    ];
+    for (text, format, vertices) in cases {
+        let error = read_from(text.as_bytes(), format, "empty.x", &ReadOptions::default())
+            .expect_err("no faces");
+        assert!(
+            matches!(
+                &error,
+                MeshIoError::Mesh { file, line: None, source: MeshError::NoFaces { vertices: v } }
+                    if file == "empty.x" && *v == vertices
+            ),
+            "{format:?} {text:?}: {error:?}"
+        );
+        assert!(
+            error
+                .to_string()
+                .starts_with("empty.x: the mesh has no faces"),
+            "{error}"
+        );
+    }
+}
+
+#[test]
 fn garbage_is_an_error_in_every_format() {
     let garbage: Vec<u8> = (0u32..4096)
         .map(|i| (i.wrapping_mul(2_654_435_761) >> 13) as u8)

@@ -270,19 +270,19 @@ fn generated_meshes_depend_on_the_seed_only() {
 #[test]
 fn every_listed_shape_name_parses() {
     for name in shapes::SHAPE_NAMES {
-        // Replace each placeholder argument by a small number.
+        // Replace each placeholder argument by a small number (3: a convex polygon needs 3).
         let spec = match name.split_once(':') {
             Some((head, args)) => {
-                let args: Vec<&str> = args.split(',').map(|_| "2").collect();
+                let args: Vec<&str> = args.split(',').map(|_| "3").collect();
                 format!("{head}:{}", args.join(","))
             }
             None => name.to_string(),
         };
-        let mesh = shapes::parse_shape(&spec).unwrap_or_else(|| panic!("{spec} did not parse"));
+        let mesh = shapes::parse_shape(&spec).unwrap_or_else(|e| panic!("{spec}: {e}"));
         assert!(mesh.face_count() > 0, "{spec}");
     }
-    assert!(shapes::parse_shape("").is_none());
-    assert!(shapes::parse_shape("grid:2").is_none());
-    assert!(shapes::parse_shape("grid:a,b").is_none());
-    assert!(shapes::parse_shape("l-shape:0").is_none());
+    assert!(shapes::parse_shape("").is_err());
+    assert!(shapes::parse_shape("grid:2").is_err());
+    assert!(shapes::parse_shape("grid:a,b").is_err());
+    assert!(shapes::parse_shape("l-shape:0").is_err());
 }

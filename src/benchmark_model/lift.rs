@@ -7,8 +7,16 @@ use super::BenchmarkError;
 use crate::TriMesh;
 use std::cmp::Ordering;
 
+/// The most wall triangles [`lift`] builds: `2 rows` per boundary edge of an obstacle. Beyond
+/// this the mesh takes gigabytes and the engine hours, and far beyond it the vertex numbers of
+/// the walls would not fit in `u32`.
+pub(crate) const MAX_WALL_FACES: u64 = 1 << 22;
+
 /// The floor at z = 0 and, on each obstacle, a wall of `rows` rows of quads (two triangles
 /// each) from every boundary edge of the floor up to `height`, closed by a flat top cap.
+///
+/// Refuses ([`BenchmarkError::InvalidOption`] for `wall_rows`) walls of more than
+/// [`MAX_WALL_FACES`] triangles, before building any.
 ///
 /// All faces are counter-clockwise seen from the open space above the surface: the floor and
 /// the caps from +z, the walls from outside their obstacle. A wall's bottom row uses the floor's boundary vertices, so
@@ -19,6 +27,16 @@ pub(crate) fn lift(
     height: f64,
     rows: usize,
 ) -> Result<TriMesh, BenchmarkError> {
+    let edges: u64 = floor.rings.iter().map(|r| r.vertices.len() as u64).sum();
+    let wall_faces = edges.saturating_mul(rows as u64).saturating_mul(2);
+    if wall_faces > MAX_WALL_FACES {
+        return Err(BenchmarkError::InvalidOption {
+            name: "wall_rows",
+            reason: format!(
+                "{rows} rows on {edges} obstacle boundary edges make {wall_faces} wall triangles; at most {MAX_WALL_FACES}"
+            ),
+        });
+    }
     let mut positions: Vec<[f64; 3]> = floor.positions.iter().map(|x| [x[0], x[1], 0.0]).collect();
     let mut faces = floor.triangles.clone();
     for (ring, corners) in floor.rings.iter().zip(obstacles) {

@@ -45,7 +45,7 @@ pub struct ModelOptions {
     pub min_angle: f64,
     /// Largest area of a floor triangle after refinement.
     pub max_area: Option<f64>,
-    /// Rows of quads in each cylinder wall.
+    /// Rows of quads in each cylinder wall: at least 1, and at most 2^22 wall triangles in all.
     pub wall_rows: usize,
     /// Most vertices refinement may add before giving up.
     pub max_additional_vertices: usize,

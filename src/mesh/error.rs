@@ -50,6 +50,14 @@ pub enum MeshError {
         /// The first faces found on it.
         faces: Vec<usize>,
     },
+    /// There are no faces: no surface to measure distances on. An empty file, a point cloud, or
+    /// faces under a name the reader does not know (a PLY element `faces` rather than `face`)
+    /// all end here rather than in a result where every point is unreachable.
+    #[error("the mesh has no faces ({vertices} vertices, 0 triangles): there is no surface to measure distances on")]
+    NoFaces {
+        /// How many vertices there are.
+        vertices: usize,
+    },
     /// Too many vertices or faces for 32-bit indices.
     #[error("the mesh has {count} elements; at most {max} are supported")]
     TooLarge {

@@ -32,9 +32,12 @@ pub struct TriMesh {
 impl TriMesh {
     /// Builds a mesh from positions and triangles (0-based vertex indices).
     ///
+    /// A mesh needs at least one face; vertices that no face uses are kept (and reported in
+    /// [`TriMesh::validation`]), and are unreachable from every source.
+    ///
     /// # Errors
-    /// [`MeshError`] for a NaN or infinite coordinate, an index out of range, a face that repeats
-    /// a vertex, or an edge shared by more than two faces.
+    /// [`MeshError`] for no faces at all, a NaN or infinite coordinate, an index out of range, a
+    /// face that repeats a vertex, or an edge shared by more than two faces.
     ///
     /// # Example
     /// ```
@@ -55,6 +58,11 @@ impl TriMesh {
                     max: MAX / 3,
                 });
             }
+        }
+        if faces.is_empty() {
+            return Err(MeshError::NoFaces {
+                vertices: positions.len(),
+            });
         }
         for (vertex, p) in positions.iter().enumerate() {
             if p.iter().any(|c| !c.is_finite()) {

@@ -17,10 +17,15 @@ pub enum SurfacePoint {
         t: f64,
     },
     /// A point of a face, by barycentric coordinates of its three corners (in face order).
+    ///
+    /// The coordinates are homogeneous: any finite, non-negative triple that is not all zero
+    /// names the point `bary / (bary[0] + bary[1] + bary[2])`, and [`SurfacePoint::validated`]
+    /// divides them by their sum (so `[1, 1, 1]` and `[0.2, 0.2, 0.2]` are both the centroid).
+    /// Validated points, and the points the library returns, sum to one up to rounding.
     Face {
         /// The face.
         face: FaceId,
-        /// Barycentric coordinates: non-negative, summing to one.
+        /// Barycentric coordinates: finite, non-negative, not all zero; homogeneous.
         bary: [f64; 3],
     },
 }
@@ -107,8 +112,15 @@ impl SurfacePoint {
     }
 
     /// Checks the point against the mesh and puts it in canonical form: barycentric coordinates
-    /// sum to one, and a point on a face's boundary or an edge's end is named by the smallest
-    /// simplex containing it (the engine relies on this to emit wedges into every face around it).
+    /// are divided by their sum, and a point on a face's boundary or an edge's end is named by
+    /// the smallest simplex containing it (the engine relies on this to emit wedges into every
+    /// face around it).
+    ///
+    /// Any finite, non-negative, not-all-zero barycentric triple is accepted, however large or
+    /// small: the coordinates are divided by the largest of them before they are summed, so the
+    /// sum cannot overflow (`[0, 1e308, 1e308]` is the midpoint of an edge). A coordinate so much
+    /// smaller than the largest that their ratio underflows to zero names a point on the face's
+    /// boundary.
     ///
     /// # Errors
     /// [`PointError`] for an element out of range or a parameter out of its domain.
@@ -136,11 +148,14 @@ impl SurfacePoint {
                 })
             }
             SurfacePoint::Face { face, bary } => {
-                let sum: f64 = bary.iter().sum();
-                if bary.iter().any(|b| !b.is_finite() || *b < 0.0) || sum <= 0.0 {
+                let largest = bary.iter().copied().fold(0.0, f64::max);
+                if bary.iter().any(|b| !b.is_finite() || *b < 0.0) || largest == 0.0 {
                     return Err(PointError::Barycentric { bary });
                 }
-                let bary = bary.map(|b| b / sum);
+                // Homogeneous coordinates: scaled into [0, 1] first, the sum lies in [1, 3].
+                let scaled = bary.map(|b| b / largest);
+                let sum: f64 = scaled.iter().sum();
+                let bary = scaled.map(|b| b / sum);
                 let corners = mesh.face(face);
                 let zeros: Vec<usize> = (0..3).filter(|&i| bary[i] == 0.0).collect();
                 Ok(match zeros[..] {
@@ -193,6 +208,65 @@ impl SurfacePoint {
                 mesh.edge(edge).faces.iter().flatten().copied().collect()
             }
             SurfacePoint::Face { face, .. } => vec![face],
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::shapes;
+
+    fn face0(bary: [f64; 3]) -> Result<SurfacePoint, PointError> {
+        SurfacePoint::Face {
+            face: FaceId(0),
+            bary,
+        }
+        .validated(&shapes::cube())
+    }
+
+    #[test]
+    fn barycentric_coordinates_near_f64_max_are_normalised_without_overflow() {
+        let mesh = shapes::cube();
+        let [_, b, c] = mesh.face(FaceId(0));
+        let edge = mesh.edge_between(b, c).expect("an edge of face 0");
+        // The sum overflowed to infinity, every coordinate became 0 and validation panicked.
+        assert_eq!(
+            face0([0.0, 1e308, 1e308]),
+            Ok(SurfacePoint::Edge { edge, t: 0.5 })
+        );
+        let centroid = face0([f64::MAX; 3]).expect("a point of face 0");
+        assert_eq!(
+            centroid,
+            SurfacePoint::Face {
+                face: FaceId(0),
+                bary: [1.0 / 3.0; 3]
+            }
+        );
+    }
+
+    #[test]
+    fn barycentric_coordinates_are_homogeneous() {
+        let centroid = face0([1.0; 3]);
+        assert_eq!(face0([0.2; 3]), centroid);
+        assert_eq!(face0([7.0; 3]), centroid);
+        // Subnormal coordinates are as good as any others.
+        assert_eq!(face0([f64::from_bits(1); 3]), centroid);
+        assert_eq!(face0([0.0, 0.0, 3.0]), face0([0.0, 0.0, 1.0]));
+    }
+
+    #[test]
+    fn barycentric_coordinates_that_name_no_point_are_refused() {
+        for bary in [
+            [0.0; 3],
+            [-1.0, 1.0, 1.0],
+            [f64::NAN, 1.0, 1.0],
+            [f64::INFINITY, 1.0, 1.0],
+        ] {
+            assert!(
+                matches!(face0(bary), Err(PointError::Barycentric { .. })),
+                "{bary:?}"
+            );
         }
     }
 }

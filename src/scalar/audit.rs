@@ -22,15 +22,28 @@ impl Site {
     };
 }
 
-/// A decision a backend could not certify within its precision cap.
+/// A decision a backend could not certify: within its precision cap, or at all.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct DecisionSite {
     /// Where the engine took it.
     pub site: Site,
-    /// The bits of precision reached.
-    pub precision: u32,
-    /// An enclosure of the value whose sign was asked, as `f64` bounds.
+    /// Why it is uncertified.
+    pub cause: Uncertainty,
+    /// An enclosure of the value whose sign was asked, as `f64` bounds (infinite when the value
+    /// divides by zero).
     pub enclosure: [f64; 2],
+}
+
+/// Why a sign is not certified.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Uncertainty {
+    /// Refinement reached the precision cap (the bits reached) without excluding zero or
+    /// proving it: the value is within `2^-cap` of zero.
+    PrecisionCap(u32),
+    /// The value divides by zero: a divisor in its expression is zero (the value is undefined
+    /// and has no sign). No precision settles it.
+    DivisionByZero,
 }
 
 /// How a backend settled the decisions of one run.
@@ -46,7 +59,8 @@ pub struct DecisionCounts {
     /// Values proved to be exactly zero by the exact stage (a separation bound or a symbolic
     /// identity); a zero the filter sees as the point interval `[0, 0]` counts as filtered.
     pub certified_zeros: u64,
-    /// Decisions not certified within the precision cap (reported, never passed off as exact).
+    /// Decisions not certified: not within the precision cap, or of a value that divides by zero
+    /// (reported, never passed off as exact).
     pub uncertified: u64,
     /// The first uncertified decisions, with their places.
     pub uncertified_sites: Vec<DecisionSite>,
@@ -64,8 +78,8 @@ pub enum Certificate {
     Refinement,
     /// Proved zero: below the separation bound, by a zero normal form, or by rational value.
     CertifiedZero,
-    /// Not established within the precision cap (bits reached); the sign given is zero.
-    Uncertified(u32),
+    /// Not established, for the reason given; the sign given is zero.
+    Uncertified(Uncertainty),
 }
 
 impl Certificate {
@@ -93,13 +107,13 @@ pub(crate) fn record(settled: Certificate, enclosure: impl FnOnce() -> [f64; 2])
             Certificate::Filter => c.by_filter += 1,
             Certificate::Refinement => c.by_refinement += 1,
             Certificate::CertifiedZero => c.certified_zeros += 1,
-            Certificate::Uncertified(precision) => {
+            Certificate::Uncertified(cause) => {
                 c.uncertified += 1;
                 if c.uncertified_sites.len() < KEPT_SITES {
                     let site = SITE.with(Cell::get);
                     c.uncertified_sites.push(DecisionSite {
                         site,
-                        precision,
+                        cause,
                         enclosure: enclosure(),
                     });
                 }

@@ -281,4 +281,29 @@ mod tests {
             None
         );
     }
+
+    #[test]
+    fn division_by_an_interval_containing_zero_is_entire() {
+        let point = Interval::point;
+        for divisor in [
+            point(0.0),
+            point(-0.0),
+            Interval { lo: -0.0, hi: 0.0 },
+            Interval { lo: 0.0, hi: 1.0 },
+            Interval { lo: -1.0, hi: 0.0 },
+            Interval::ENTIRE,
+        ] {
+            for dividend in [point(0.0), point(1.0), Interval { lo: -2.0, hi: 3.0 }] {
+                assert_eq!(
+                    dividend / divisor,
+                    Interval::ENTIRE,
+                    "{dividend:?} / {divisor:?}"
+                );
+            }
+        }
+        // What an infinite enclosure turns into downstream: never a sign.
+        let undefined = point(1.0) / point(0.0);
+        assert_eq!((undefined * point(0.0)).sign(), None);
+        assert_eq!((undefined - undefined).sign(), None);
+    }
 }

@@ -40,7 +40,7 @@ mod rational;
 mod roots;
 
 pub use adaptive::{Adaptive, Resolution};
-pub use audit::{Certificate, DecisionCounts, DecisionSite, Site};
+pub use audit::{Certificate, DecisionCounts, DecisionSite, Site, Uncertainty};
 pub use bisector::{BisectorRoots, Eq2Case, Eq2Coefficients, SourceDistance};
 pub use exact::Real;
 pub use interval::Interval;
@@ -106,6 +106,13 @@ pub trait Ring:
     + for<'a> Div<&'a Self, Output = Self>
 {
     /// The exact value of an `f64` (every finite `f64` is a binary rational).
+    ///
+    /// # Panics
+    /// Backends whose values are exact ([`Real`]) panic on a NaN or infinite `x`, which has no
+    /// exact value; backends with `f64` values ([`f64`], [`Adaptive`], [`Interval`]) keep it as
+    /// it is. The engine passes only finite values: coordinates of a [`TriMesh`](crate::TriMesh)
+    /// (checked by [`TriMesh::new`](crate::TriMesh::new)), validated parameters of surface
+    /// points and constants.
     fn from_f64(x: f64) -> Self;
 }
 

@@ -27,3 +27,22 @@ pub fn fails_with(args: &[&str], needle: &str) {
     assert_eq!(out.status.code(), Some(1), "stderr: {err}");
     assert!(err.contains(needle), "expected '{needle}' in: {err}");
 }
+
+/// Refuses the input: exits with 1 (an error) or 2 (a usage error), never with a panic's 101
+/// or a signal, and says on stderr everything in `needles` (the file, the line, the value).
+pub fn refuses(args: &[&str], needles: &[&str]) {
+    let out = run(args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        matches!(out.status.code(), Some(1 | 2)),
+        "{args:?} exited with {:?}; stderr: {err}",
+        out.status.code()
+    );
+    assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
+    for needle in needles {
+        assert!(
+            err.contains(needle),
+            "{args:?}: expected '{needle}' in: {err}"
+        );
+    }
+}

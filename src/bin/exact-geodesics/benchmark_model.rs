@@ -15,9 +15,10 @@ pub struct BenchmarkModelArgs {
     /// Seed of the random scene.
     #[arg(long, default_value_t = 1)]
     seed: u64,
-    /// Number of obstacles in the random scene.
-    #[arg(long, default_value_t = 8)]
-    obstacles: usize,
+    /// Number of obstacles in the random scene, at most 10000 (the visibility graph grows with
+    /// the square of their corners: 10000 take about 15 s).
+    #[arg(long, default_value_t = 8, value_parser = clap::value_parser!(u64).range(0..=10_000))]
+    obstacles: u64,
     /// A scene written as JSON instead of a random one:
     /// {"rectangle": {"min": [x, y], "max": [x, y]}, "obstacles": [[[x, y], ...], ...], "p": [x, y], "q": [x, y]}.
     #[arg(long, conflicts_with_all = ["seed", "obstacles"])]
@@ -48,7 +49,10 @@ pub fn run(args: &BenchmarkModelArgs) -> Result<(), String> {
             let scene = Scene::from_json(&text).map_err(|e| format!("{}: {e}", path.display()))?;
             (scene, None)
         }
-        None => (Scene::random(args.seed, args.obstacles), Some(args.seed)),
+        None => (
+            Scene::random(args.seed, args.obstacles as usize),
+            Some(args.seed),
+        ),
     };
     let options = ModelOptions {
         min_angle: args.min_angle,

@@ -9,12 +9,7 @@ use std::path::Path;
 /// usable but unusual mesh go to stderr.
 pub fn load_mesh(spec: &str, triangulate: bool) -> Result<TriMesh, String> {
     let mesh = if let Some(shape) = spec.strip_prefix("gen:") {
-        shapes::parse_shape(shape).ok_or_else(|| {
-            format!(
-                "unknown generated mesh '{shape}'; known: {}",
-                shapes::SHAPE_NAMES.join(", ")
-            )
-        })?
+        shapes::parse_shape(shape).map_err(|e| e.to_string())?
     } else {
         read_path(Path::new(spec), &ReadOptions { triangulate }).map_err(|e| e.to_string())?
     };

@@ -16,6 +16,7 @@ mod verify;
 mod wedges;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use exact_geodesics::scalar::exact;
 use exact_geodesics::{
     propagate_with_progress, GeodesicField, PropagateOptions, Scalar, SurfacePoint, TriMesh,
 };
@@ -97,14 +98,28 @@ pub struct Common {
     pub backend: Backend,
     /// Largest precision (bits) the exact backend tries before it records a decision as
     /// uncertified.
-    #[arg(long, default_value_t = exact_geodesics::scalar::exact::DEFAULT_PRECISION_CAP)]
+    #[arg(
+        long,
+        default_value_t = exact::DEFAULT_PRECISION_CAP,
+        value_parser = clap::value_parser!(u32)
+            .range(i64::from(exact::MIN_PRECISION_CAP)..=i64::from(exact::MAX_PRECISION_CAP))
+    )]
     pub precision_cap: u32,
     /// Stop propagating at this distance; farther vertices are reported unreachable (inf).
-    #[arg(long)]
+    /// A non-negative number; `inf` is no limit.
+    #[arg(long, allow_hyphen_values = true, value_parser = non_negative_distance)]
     pub max_distance: Option<f64>,
     /// Split polygons with more than three corners into triangles instead of refusing them.
     #[arg(long)]
     pub triangulate: bool,
+}
+
+/// Parses `--max-distance`: a number that is not negative (`inf` allowed, NaN not).
+fn non_negative_distance(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(d) if d >= 0.0 => Ok(d),
+        _ => Err("expected a non-negative number (inf for no limit)".to_owned()),
+    }
 }
 
 /// A loaded mesh with parsed sources, ready to propagate.
@@ -121,16 +136,9 @@ impl Common {
         let sources = self
             .sources
             .iter()
-            .map(|s| spec::parse_point(&mesh, s))
+            .map(|s| spec::parse_point(&mesh, &self.mesh, s))
             .collect::<Result<Vec<_>, _>>()?;
-        if let Some(d) = self.max_distance {
-            if d.is_nan() || d < 0.0 {
-                return Err(format!(
-                    "--max-distance must be a non-negative number, got {d}"
-                ));
-            }
-        }
-        exact_geodesics::scalar::exact::set_precision_cap(self.precision_cap);
+        exact::set_precision_cap(self.precision_cap).map_err(|e| e.to_string())?;
         Ok(Job {
             mesh,
             sources,

@@ -30,7 +30,7 @@ pub struct PathArgs {
 
 pub fn run(args: &PathArgs) -> Result<(), String> {
     let job = args.common.job()?;
-    let target = spec::parse_point(&job.mesh, &args.target)?;
+    let target = spec::parse_point(&job.mesh, &args.common.mesh, &args.target)?;
     let path = with_backend!(job.backend, S => job.field::<S>()?.trace_back(&target).map_err(|e| e.to_string())?);
     emit(args.out.as_ref(), &render(&path, args.format))
 }

@@ -28,9 +28,10 @@ pub fn run(args: &SubdivisionArgs) -> Result<(), String> {
     let job = args.common.job()?;
     if args.face as usize >= job.mesh.face_count() {
         return Err(format!(
-            "face {} is out of range: the mesh has {} faces",
-            args.face,
-            job.mesh.face_count()
+            "--face {f}: face {f} is out of range: {} has {} faces",
+            args.common.mesh,
+            job.mesh.face_count(),
+            f = args.face,
         ));
     }
     let subdivision = with_backend!(job.backend, S => {

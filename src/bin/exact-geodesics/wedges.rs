@@ -41,12 +41,18 @@ pub fn run(args: &WedgesArgs) -> Result<(), String> {
         let e = (a.index() < mesh.vertex_count() && b.index() < mesh.vertex_count())
             .then(|| mesh.edge_between(a, b))
             .flatten()
-            .ok_or_else(|| format!("no edge joins vertices {} and {}", a.0, b.0))?;
+            .ok_or_else(|| {
+                format!(
+                    "--edge {text}: no edge of {} joins vertices {} and {}",
+                    args.common.mesh, a.0, b.0
+                )
+            })?;
         selected.push((a, e, None));
     } else if let Some(f) = args.face {
         if f as usize >= mesh.face_count() {
             return Err(format!(
-                "face {f} is out of range: the mesh has {} faces",
+                "--face {f}: face {f} is out of range: {} has {} faces",
+                args.common.mesh,
                 mesh.face_count()
             ));
         }

@@ -12,6 +12,14 @@
 //!    *uncertified*: the value is then within `2^-cap` of zero, it is treated as zero (a tie),
 //!    and it is recorded with its place, never passed off as exact.
 //!
+//! Division by zero: `x / y` builds a node whatever `y` is, and a value with a division whose
+//! divisor the filter cannot show non-zero has its divisors decided first (stages 1 to 4). If
+//! one is zero, or not certified within the cap, the value is undefined or may be, and its sign
+//! is *uncertified* ([`Uncertainty::DivisionByZero`] or [`Uncertainty::PrecisionCap`]): zero
+//! is returned, counted and located like any uncertified decision, and never certified (not
+//! even when the rest of the expression would settle it, as in `sqrt(1 / 0) + 1`).
+//! [`Field::to_f64`] of a value with a divisor certified zero is NaN.
+//!
 //! \[BFMSS01\] Burnikel, Funke, Mehlhorn, Schirra, Schmitt, *A separation bound for real
 //! algebraic expressions*, ESA 2001.
 
@@ -19,18 +27,19 @@ mod node;
 mod normal_form;
 mod refine;
 
-pub use super::audit::Certificate;
+pub use super::audit::{Certificate, Uncertainty};
 
 use super::audit::{self, DecisionCounts, Site};
 use super::roots::{self, CertifiedSign};
 use super::{BisectorRoots, Field, Interval, Ring, Scalar, Sign, SourceDistance};
-use node::Node;
+use node::{DivisorCheck, Node, Op};
 use rug::{Float, Rational};
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 use std::sync::atomic::{AtomicU32, Ordering as AtomicOrdering};
 use std::sync::Arc;
+use thiserror::Error;
 
 /// The precision cap, in bits, used unless [`set_precision_cap`] says otherwise.
 pub const DEFAULT_PRECISION_CAP: u32 = 8192;
@@ -38,12 +47,46 @@ pub const DEFAULT_PRECISION_CAP: u32 = 8192;
 /// The first precision of the exact stage, in bits.
 const FIRST_PRECISION: u32 = 128;
 
+/// The smallest precision cap, in bits: the exact stage starts at this precision.
+pub const MIN_PRECISION_CAP: u32 = FIRST_PRECISION;
+
+/// The largest precision cap, in bits. Refinement doubles the precision up to the cap and keeps
+/// an enclosure of two MPFR numbers on every node of the expression, so at `2^20` bits a hard
+/// decision already costs 256 KiB per node; a larger cap would exhaust memory before it helped.
+pub const MAX_PRECISION_CAP: u32 = 1 << 20;
+
 static PRECISION_CAP: AtomicU32 = AtomicU32::new(DEFAULT_PRECISION_CAP);
 
+/// A precision cap outside [`MIN_PRECISION_CAP`]`..=`[`MAX_PRECISION_CAP`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Error)]
+#[error("precision cap {bits} is out of range: it must be from {MIN_PRECISION_CAP} to {MAX_PRECISION_CAP} bits")]
+pub struct PrecisionCapError {
+    /// The cap asked for, in bits.
+    pub bits: u32,
+}
+
 /// Sets the largest precision, in bits, at which a sign is sought before the decision is
-/// recorded as uncertified (at least 128). Applies to every thread.
-pub fn set_precision_cap(bits: u32) {
-    PRECISION_CAP.store(bits.max(FIRST_PRECISION), AtomicOrdering::Relaxed);
+/// recorded as uncertified. Applies to every thread.
+///
+/// # Errors
+/// [`PrecisionCapError`] if `bits` is below [`MIN_PRECISION_CAP`] or above
+/// [`MAX_PRECISION_CAP`]; the cap is then left as it was.
+///
+/// # Example
+/// ```
+/// use exact_geodesics::scalar::exact::{precision_cap, set_precision_cap};
+/// set_precision_cap(4096)?;
+/// assert_eq!(precision_cap(), 4096);
+/// assert!(set_precision_cap(0).is_err());
+/// assert_eq!(precision_cap(), 4096);
+/// # Ok::<(), exact_geodesics::scalar::exact::PrecisionCapError>(())
+/// ```
+pub fn set_precision_cap(bits: u32) -> Result<(), PrecisionCapError> {
+    if !(MIN_PRECISION_CAP..=MAX_PRECISION_CAP).contains(&bits) {
+        return Err(PrecisionCapError { bits });
+    }
+    PRECISION_CAP.store(bits, AtomicOrdering::Relaxed);
+    Ok(())
 }
 
 /// The current precision cap, in bits.
@@ -67,8 +110,14 @@ impl Real {
     }
 
     /// The sign and how it was established, without counting the decision.
+    ///
+    /// A value that divides by zero, or whose divisors cannot all be certified non-zero within
+    /// the precision cap, is [`Certificate::Uncertified`] with sign zero.
     pub fn certified_sign(&self) -> (Sign, Certificate) {
         let node = &self.0;
+        if let Err(cause) = check_divisors(node) {
+            return (Sign::Zero, Certificate::Uncertified(cause));
+        }
         if let Some(s) = node.filter.sign() {
             return (s, Certificate::Filter);
         }
@@ -92,7 +141,7 @@ impl Real {
         }
         let cap = precision_cap();
         let zero_bits = refine::zero_bound_bits(node, cap);
-        let mut precision = 2 * FIRST_PRECISION;
+        let mut precision = (2 * FIRST_PRECISION).min(cap);
         loop {
             let (lo, hi) = refine::enclosure(node, precision);
             if lo.cmp0() == Some(Ordering::Greater) {
@@ -107,7 +156,10 @@ impl Real {
                 }
             }
             if precision >= cap {
-                return (Sign::Zero, Certificate::Uncertified(precision));
+                return (
+                    Sign::Zero,
+                    Certificate::Uncertified(Uncertainty::PrecisionCap(precision)),
+                );
             }
             precision = precision.saturating_mul(2).min(cap);
         }
@@ -155,6 +207,45 @@ impl Real {
     }
 }
 
+/// Certifies every divisor at or below `node` that its filter does not show non-zero (see
+/// [`Node::divisors_unchecked`]); the error says why one is not certified non-zero.
+fn check_divisors(node: &Arc<Node>) -> Result<(), Uncertainty> {
+    if !node.divisors_unchecked {
+        return Ok(());
+    }
+    let cap = precision_cap();
+    match node.divisors_checked.get() {
+        Some(DivisorCheck::NonZero) => return Ok(()),
+        Some(DivisorCheck::Zero) => return Err(Uncertainty::DivisionByZero),
+        Some(&DivisorCheck::Uncertain {
+            cap: then,
+            precision,
+        }) if then == cap => {
+            return Err(Uncertainty::PrecisionCap(precision));
+        }
+        // Not checked yet, or at another cap (then checked again, and not kept).
+        Some(DivisorCheck::Uncertain { .. }) | None => {}
+    }
+    let outcome = node.children().try_for_each(check_divisors).and_then(|()| {
+        let Op::Div(_, divisor) = &node.op else {
+            return Ok(());
+        };
+        match Real(divisor.clone()).certified_sign() {
+            (_, Certificate::Uncertified(cause)) => Err(cause),
+            (Sign::Zero, _) => Err(Uncertainty::DivisionByZero),
+            (Sign::Positive | Sign::Negative, _) => Ok(()),
+        }
+    });
+    let checked = match outcome {
+        Ok(()) => DivisorCheck::NonZero,
+        Err(Uncertainty::DivisionByZero) => DivisorCheck::Zero,
+        Err(Uncertainty::PrecisionCap(precision)) => DivisorCheck::Uncertain { cap, precision },
+    };
+    // Kept by the first check only: another thread, or an earlier cap, may have been first.
+    let _ = node.divisors_checked.set(checked);
+    outcome
+}
+
 /// Whether `|x| <= 2^-bits`.
 fn below(x: &Float, bits: u32) -> bool {
     x.is_zero()
@@ -196,14 +287,29 @@ impl Neg for Real {
 }
 
 impl Ring for Real {
+    /// The exact value of a finite `f64`.
+    ///
+    /// # Panics
+    /// If `x` is NaN or infinite: it has no exact value, and no value would be honest. The
+    /// engine passes mesh coordinates (finite, see [`TriMesh::new`](crate::TriMesh::new)),
+    /// validated parameters and constants only.
     fn from_f64(x: f64) -> Self {
-        Real::from_rational(Rational::from_f64(x).unwrap_or_default())
+        let exact = Rational::from_f64(x);
+        Real::from_rational(
+            exact.unwrap_or_else(|| {
+                panic!("Real::from_f64({x}): a non-finite f64 has no exact value")
+            }),
+        )
     }
 }
 
 impl Field for Real {
-    /// The nearest `f64` (from a 128-bit enclosure unless the filter is already a point).
+    /// The nearest `f64` (from a 128-bit enclosure unless the filter is already a point); NaN
+    /// for a value that divides by zero.
     fn to_f64(&self) -> f64 {
+        if check_divisors(&self.0) == Err(Uncertainty::DivisionByZero) {
+            return f64::NAN;
+        }
         let f = self.filter();
         if f.lo == f.hi {
             return f.lo;
@@ -234,11 +340,14 @@ impl Scalar for Real {
 
     fn compare(&self, other: &Self) -> Ordering {
         let (a, b) = (self.filter(), other.filter());
-        if a.hi < b.lo {
+        // Values with divisors that may be zero are compared by the sign of their difference,
+        // which checks the divisors first.
+        let filtered = !self.0.divisors_unchecked && !other.0.divisors_unchecked;
+        if filtered && a.hi < b.lo {
             audit::record(Certificate::Filter, || [0.0; 2]);
             return Ordering::Less;
         }
-        if a.lo > b.hi {
+        if filtered && a.lo > b.hi {
             audit::record(Certificate::Filter, || [0.0; 2]);
             return Ordering::Greater;
         }
@@ -288,5 +397,116 @@ impl Scalar for Real {
 
     fn take_counts() -> DecisionCounts {
         audit::take()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rug::Integer;
+
+    fn int(i: i64) -> Real {
+        Real::from_integer(i)
+    }
+
+    fn by_zero() -> (Sign, Certificate) {
+        (
+            Sign::Zero,
+            Certificate::Uncertified(Uncertainty::DivisionByZero),
+        )
+    }
+
+    /// `sqrt(2)^2 - 2`: zero, but not a rational leaf, and its filter straddles zero.
+    fn hidden_zero() -> Real {
+        let r2 = int(2).sqrt();
+        r2.clone() * &r2 - int(2)
+    }
+
+    #[test]
+    fn division_by_an_exact_zero_is_never_certified() {
+        let undefined = int(1) / int(0);
+        assert_eq!(undefined.certified_sign(), by_zero());
+        // Without square roots the rational evaluation read 1 / 0 as 0: certified positive.
+        assert_eq!((undefined.clone() + int(1)).certified_sign(), by_zero());
+        // The square root clips the infinite enclosure to [0, inf]: the filter said positive.
+        assert_eq!((undefined.sqrt() + int(1)).certified_sign(), by_zero());
+        let hidden = int(1) / hidden_zero();
+        assert_eq!(hidden.certified_sign(), by_zero());
+        assert_eq!((hidden.sqrt() + int(1)).certified_sign(), by_zero());
+    }
+
+    #[test]
+    fn rewriting_does_not_remove_a_division_by_zero() {
+        let undefined = int(1) / int(0);
+        // 0 * x = 0 and x - x = 0 hold only where x has a value.
+        assert_eq!((int(0) * undefined.clone()).certified_sign(), by_zero());
+        assert_eq!((undefined.clone() * int(0)).certified_sign(), by_zero());
+        assert_eq!(
+            (undefined.clone() - undefined.clone()).certified_sign(),
+            by_zero()
+        );
+        let hidden = int(0) * (int(3) / hidden_zero());
+        assert_eq!(hidden.certified_sign(), by_zero());
+    }
+
+    #[test]
+    fn a_division_by_zero_is_counted_uncertified_and_located() {
+        let _ = Real::take_counts();
+        let undefined = (int(1) / int(0)).sqrt() + int(1);
+        Real::locate(Site {
+            edge: Some(7),
+            what: "a test",
+        });
+        // The filter alone would have said undefined > 0.
+        assert_eq!(undefined.compare(&int(0)), Ordering::Equal);
+        assert_eq!(undefined.sign(), Sign::Zero);
+        let counts = Real::take_counts();
+        assert_eq!((counts.decisions, counts.uncertified), (2, 2));
+        let site = &counts.uncertified_sites[0];
+        assert_eq!(site.cause, Uncertainty::DivisionByZero);
+        assert_eq!(site.site.edge, Some(7));
+        assert!(undefined.to_f64().is_nan());
+        assert!((int(1) / int(0)).to_f64().is_nan());
+    }
+
+    /// `sqrt(10^70 + 1) - 10^35`, about 5e-36: non-zero, but its `f64` filter contains zero.
+    fn tiny() -> Real {
+        let e35 = Integer::from(Integer::u_pow_u(10, 35));
+        let e35 = Real::from_rational(Rational::from(e35));
+        (e35.clone() * &e35 + int(1)).sqrt() - &e35
+    }
+
+    #[test]
+    fn a_divisor_the_filter_cannot_separate_from_zero_is_certified_first() {
+        let tiny = tiny();
+        assert_eq!(tiny.filter().sign(), None);
+        let huge = int(1) / tiny;
+        assert_eq!(
+            huge.certified_sign(),
+            (Sign::Positive, Certificate::Refinement)
+        );
+        assert!(huge.to_f64() > 1.9e35 && huge.to_f64() < 2.1e35);
+    }
+
+    #[test]
+    fn rewriting_keeps_its_zeros_once_the_divisors_are_non_zero() {
+        let huge = int(1) / tiny();
+        let zero = (Sign::Zero, Certificate::Filter);
+        assert_eq!((huge.clone() - huge.clone()).certified_sign(), zero);
+        assert_eq!((int(0) * huge.clone()).certified_sign(), zero);
+        assert_eq!(huge.compare(&huge), Ordering::Equal);
+        assert_eq!(Real::take_counts().uncertified, 0);
+    }
+
+    #[test]
+    #[should_panic(expected = "non-finite f64 has no exact value")]
+    fn from_f64_of_nan_panics() {
+        let _ = Real::from_f64(f64::NAN);
+    }
+
+    #[test]
+    #[should_panic(expected = "non-finite f64 has no exact value")]
+    fn from_f64_of_infinity_panics() {
+        let _ = Real::from_f64(f64::INFINITY);
     }
 }

@@ -3,13 +3,15 @@
 //! Each node carries, computed once when it is built:
 //! - an `f64` [`Interval`] enclosing its value (the filter);
 //! - the BFMSS quantities `log2 u(E)` and `log2 l(E)` of its separation bound \[BFMSS01\];
-//! - whether a square root occurs below it (if not, it can be evaluated as a rational).
+//! - whether a square root occurs below it (if not, it can be evaluated as a rational);
+//! - whether a division below it has a divisor that the filter does not show non-zero (such
+//!   divisors are decided before any sign of the node is, see [`Node::divisors_unchecked`]).
 //!
 //! Operations on two rational leaves fold into a rational leaf (while it stays small), and the
 //! square root of a perfect-square rational is rational, so meshes with rational lengths build
 //! no DAG at all.
 
-use super::super::Interval;
+use super::super::{Interval, Sign};
 use super::normal_form::NormalForm;
 use rug::{Integer, Rational};
 use std::sync::{Arc, Mutex, OnceLock};
@@ -47,8 +49,33 @@ pub(crate) struct Node {
     /// `log2 l(E)`, an upper bound.
     pub(crate) log_l: f64,
     pub(crate) has_sqrt: bool,
+    /// Whether a division at or below this node has a divisor whose filter contains zero, so
+    /// that the divisor may be zero. Such a node has no certified sign until every such divisor
+    /// is certified non-zero: a division by zero has no value, and the stages below would
+    /// otherwise read one into it (an infinite enclosure clipped by a square root, a rational
+    /// evaluation, a normal form, or a rewriting such as `0 * x = 0`).
+    pub(crate) divisors_unchecked: bool,
+    /// The outcome of checking those divisors, once known.
+    pub(crate) divisors_checked: OnceLock<DivisorCheck>,
     pub(crate) cache: Mutex<Option<Enclosure>>,
     pub(crate) normal_form: OnceLock<Option<NormalForm>>,
+}
+
+/// The outcome of checking a node's divisors (see [`Node::divisors_unchecked`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum DivisorCheck {
+    /// Every divisor is certified non-zero.
+    NonZero,
+    /// A divisor is certified zero.
+    Zero,
+    /// A divisor is shown neither zero nor non-zero within the precision cap `cap` (bits),
+    /// refined to `precision`; valid while the cap stays `cap`.
+    Uncertain {
+        /// The precision cap of the check.
+        cap: u32,
+        /// The precision reached.
+        precision: u32,
+    },
 }
 
 /// `log2(2^a + 2^b)`, rounded up to the next whole bit.
@@ -92,6 +119,8 @@ impl Node {
             log_u: log2_bound(r.numer()),
             log_l: log2_bound(r.denom()),
             has_sqrt: false,
+            divisors_unchecked: false,
+            divisors_checked: OnceLock::new(),
             op: Op::Leaf(r),
             cache: Mutex::new(None),
             normal_form: OnceLock::new(),
@@ -106,15 +135,40 @@ impl Node {
     }
 
     fn build(op: Op, filter: Interval, log_u: f64, log_l: f64, has_sqrt: bool) -> Arc<Node> {
+        let divisors_unchecked = match &op {
+            Op::Div(a, b) => {
+                a.divisors_unchecked
+                    || b.divisors_unchecked
+                    || !matches!(b.filter.sign(), Some(Sign::Positive | Sign::Negative))
+            }
+            _ => {
+                let mut children = op_children(&op);
+                children.any(|c| c.divisors_unchecked)
+            }
+        };
         Arc::new(Node {
             op,
             filter,
             log_u,
             log_l,
             has_sqrt,
+            divisors_unchecked,
+            divisors_checked: OnceLock::new(),
             cache: Mutex::new(None),
             normal_form: OnceLock::new(),
         })
+    }
+
+    /// `x - x` or `0 * x`: zero wherever `x` has a value. Without divisors to check that is the
+    /// rational zero; otherwise the operation is kept, for its divisors to be checked before
+    /// its sign is given, but its filter is the point zero, so that the sign is certified zero
+    /// once they are shown non-zero (a zero times a division by zero stays undefined).
+    fn zero_of(op: Op) -> Arc<Node> {
+        if !op_children(&op).any(|c| c.divisors_unchecked) {
+            return Node::leaf(Rational::new());
+        }
+        let has_sqrt = op_children(&op).any(|c| c.has_sqrt);
+        Node::build(op, Interval::point(0.0), f64::NEG_INFINITY, 0.0, has_sqrt)
     }
 
     /// Folds a binary operation of two small rational leaves.
@@ -158,7 +212,7 @@ impl Node {
             return n;
         }
         if Arc::ptr_eq(&a, &b) {
-            return Node::leaf(Rational::new());
+            return Node::zero_of(Op::Sub(a, b));
         }
         if b.is_zero() {
             return a;
@@ -175,11 +229,8 @@ impl Node {
         if let Some(n) = Node::fold(&a, &b, |x, y| Some(Rational::from(x * y))) {
             return n;
         }
-        if a.is_zero() {
-            return a;
-        }
-        if b.is_zero() {
-            return b;
+        if a.is_zero() || b.is_zero() {
+            return Node::zero_of(Op::Mul(a, b));
         }
         let (log_u, log_l) = (a.log_u + b.log_u, a.log_l + b.log_l);
         let (filter, has_sqrt) = (a.filter * b.filter, a.has_sqrt || b.has_sqrt);
@@ -223,13 +274,18 @@ impl Node {
 
     /// The children of this node.
     pub(crate) fn children(&self) -> impl Iterator<Item = &Arc<Node>> {
-        let (a, b) = match &self.op {
-            Op::Add(a, b) | Op::Sub(a, b) | Op::Mul(a, b) | Op::Div(a, b) => (Some(a), Some(b)),
-            Op::Neg(a) | Op::Sqrt(a) => (Some(a), None),
-            Op::Leaf(_) | Op::Dropped => (None, None),
-        };
-        a.into_iter().chain(b)
+        op_children(&self.op)
     }
+}
+
+/// The operands of an operation.
+fn op_children(op: &Op) -> impl Iterator<Item = &Arc<Node>> {
+    let (a, b) = match op {
+        Op::Add(a, b) | Op::Sub(a, b) | Op::Mul(a, b) | Op::Div(a, b) => (Some(a), Some(b)),
+        Op::Neg(a) | Op::Sqrt(a) => (Some(a), None),
+        Op::Leaf(_) | Op::Dropped => (None, None),
+    };
+    a.into_iter().chain(b)
 }
 
 impl Drop for Node {

@@ -122,6 +122,10 @@ pub(crate) fn enclosure(node: &Node, prec: u32) -> (Float, Float) {
 }
 
 /// The exact value of a DAG without square roots.
+///
+/// # Panics
+/// If a divisor is zero; [`Real::certified_sign`](super::Real::certified_sign) certifies every
+/// divisor non-zero first.
 pub(crate) fn rational_value(root: &Arc<Node>) -> Rational {
     fn eval(node: &Arc<Node>, memo: &mut HashMap<*const Node, Rational>) -> Rational {
         if let Some(r) = memo.get(&Arc::as_ptr(node)) {
@@ -134,11 +138,11 @@ pub(crate) fn rational_value(root: &Arc<Node>) -> Rational {
             Op::Mul(a, b) => eval(a, memo) * eval(b, memo),
             Op::Div(a, b) => {
                 let d = eval(b, memo);
-                if d.is_zero() {
-                    Rational::new()
-                } else {
-                    eval(a, memo) / d
-                }
+                assert!(
+                    !d.is_zero(),
+                    "divisors are certified non-zero before evaluation"
+                );
+                eval(a, memo) / d
             }
             Op::Neg(a) => -eval(a, memo),
             Op::Sqrt(_) | Op::Dropped => unreachable!("only called on DAGs without square roots"),
@@ -177,4 +181,29 @@ pub(crate) fn zero_bound_bits(root: &Arc<Node>, cap: u32) -> Option<u32> {
     let degree = 2f64.powi(k as i32);
     let bits = (degree - 1.0) * root.log_u.max(0.0) + root.log_l.max(0.0) + 2.0;
     (bits.is_finite() && bits < f64::from(cap)).then(|| bits.ceil() as u32)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rug::Rational;
+
+    fn leaf(i: i32) -> Arc<Node> {
+        Node::leaf(Rational::from(i))
+    }
+
+    #[test]
+    fn a_quotient_by_an_enclosure_of_zero_is_entire() {
+        let by_zero = Node::div(leaf(1), leaf(0));
+        let root2 = Node::sqrt(leaf(2));
+        let hidden_zero = Node::sub(Node::mul(root2.clone(), root2), leaf(2));
+        let by_hidden_zero = Node::div(leaf(1), hidden_zero);
+        for node in [by_zero, by_hidden_zero] {
+            for precision in [128, 1024] {
+                let (lo, hi) = enclosure(&node, precision);
+                assert!(lo.is_infinite() && lo.is_sign_negative(), "{lo}");
+                assert!(hi.is_infinite() && hi.is_sign_positive(), "{hi}");
+            }
+        }
+    }
 }

@@ -3,6 +3,10 @@
 //! All generated meshes are consistently oriented (counter-clockwise seen from outside, or from
 //! +z for planar ones), manifold, and free of zero-area faces.
 
+mod spec;
+
+pub use spec::{parse_shape, ShapeError, MAX_GENERATED_FACES, SHAPE_NAMES};
+
 use super::TriMesh;
 
 /// A small deterministic generator (SplitMix64), so that generated meshes depend on the seed
@@ -433,52 +437,6 @@ pub fn paper_example4() -> TriMesh {
     )
 }
 
-/// The shapes [`parse_shape`] accepts.
-pub const SHAPE_NAMES: &[&str] = &[
-    "cube",
-    "tetrahedron",
-    "octahedron",
-    "icosahedron",
-    "icosphere:K",
-    "grid:NX,NY",
-    "l-shape:N",
-    "square-with-hole:N",
-    "convex:SEED,BOUNDARY,INTERIOR",
-    "paper-example-1",
-    "paper-example-3",
-    "paper-example-4",
-];
-
-/// A generated mesh by name (see [`SHAPE_NAMES`]), or `None` for an unknown name or bad numbers.
-/// Sizes are capped so that a typo cannot ask for billions of faces.
-pub fn parse_shape(spec: &str) -> Option<TriMesh> {
-    let (name, args) = spec.split_once(':').unwrap_or((spec, ""));
-    let numbers: Option<Vec<u64>> = if args.is_empty() {
-        Some(Vec::new())
-    } else {
-        args.split(',').map(|a| a.trim().parse().ok()).collect()
-    };
-    let numbers = numbers?;
-    let small = |x: u64, max: u64| (1..=max).contains(&x).then_some(x as usize);
-    Some(match (name, numbers.as_slice()) {
-        ("cube", []) => cube(),
-        ("tetrahedron", []) => tetrahedron(),
-        ("octahedron", []) => octahedron(),
-        ("icosahedron", []) => icosahedron(),
-        ("icosphere", &[k]) if k <= 8 => icosphere(k as u32),
-        ("grid", &[nx, ny]) => grid(small(nx, 2000)?, small(ny, 2000)?, 1.0, 1.0),
-        ("l-shape", &[n]) => l_shape(small(n, 1000)?),
-        ("square-with-hole", &[n]) => square_with_hole(small(n, 1000)?),
-        ("convex", &[seed, b, i]) => {
-            random_convex_triangulation(seed, small(b, 10_000)?.max(3), i.min(100_000) as usize)
-        }
-        ("paper-example-1", []) => paper_example1(),
-        ("paper-example-3", []) => paper_example3(),
-        ("paper-example-4", []) => paper_example4(),
-        _ => return None,
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -576,19 +534,6 @@ mod tests {
         assert_eq!(mesh.vertex_count(), 40);
         assert_eq!(mesh.face_count(), 8 + 2 * 30);
         assert_eq!(mesh.validation().boundary_edges, 10);
-    }
-
-    #[test]
-    fn shapes_parse_by_name() {
-        assert_eq!(
-            parse_shape("icosphere:1").map(|m| m.vertex_count()),
-            Some(42)
-        );
-        assert_eq!(parse_shape("grid:2,3").map(|m| m.face_count()), Some(12));
-        assert!(parse_shape("grid:0,3").is_none());
-        assert!(parse_shape("icosphere:99").is_none());
-        assert!(parse_shape("sphere").is_none());
-        assert!(parse_shape("cube:1").is_none());
     }
 
     fn corners(mesh: &TriMesh, f: &[u32; 3]) -> [[f64; 3]; 3] {
