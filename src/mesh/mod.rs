@@ -222,6 +222,11 @@ impl TriMesh {
         &self.topology.edge_length
     }
 
+    /// Whether a face is degenerate (listed in [`ValidationReport::zero_area_faces`]).
+    pub fn is_degenerate_face(&self, f: FaceId) -> bool {
+        self.report.zero_area_faces.binary_search(&f).is_ok()
+    }
+
     /// What was unusual but acceptable about the input.
     pub fn validation(&self) -> &ValidationReport {
         &self.report

@@ -122,8 +122,6 @@ pub(crate) struct VertexDistance<S> {
     pub(crate) distance: S,
     pub(crate) approx: f64,
     pub(crate) source: usize,
-    /// The vertex at the same place whose distance this is, across an edge of length zero.
-    pub(crate) twin: Option<VertexId>,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -295,21 +293,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
     }
 
     /// Lowers a vertex's distance if `distance` is better; a vertex that may bend geodesics then
-    /// waits in the queue to act as a pseudo-source.
+    /// waits in the queue to act as a pseudo-source. Its twins (ends of its edges of length
+    /// zero, the same point of the surface) take the same distance as it is, not a rounded
+    /// copy of it.
     pub(crate) fn improve_vertex(&mut self, v: VertexId, distance: S, source: usize) {
-        self.improve_vertex_via(v, distance, source, None);
-    }
-
-    /// [`Self::improve_vertex`], reached straight or across an edge of length zero from `twin`;
-    /// a vertex's twins (ends of its edges of length zero, the same point of the surface) take
-    /// its distance as it is, not a rounded copy of it.
-    fn improve_vertex_via(
-        &mut self,
-        v: VertexId,
-        distance: S,
-        source: usize,
-        twin: Option<VertexId>,
-    ) {
         let slot = &mut self.vertices[v.index()];
         match slot {
             Some(known) if distance.compare_distance(&known.distance) != Ordering::Less => return,
@@ -321,7 +308,6 @@ impl<'m, S: Scalar> Engine<'m, S> {
             distance: distance.clone(),
             approx,
             source,
-            twin,
         });
         if self.mesh.may_bend_geodesics(v) {
             self.pending_emission[v.index()] = true;
@@ -334,7 +320,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         for &e in mesh.vertex_edges(v) {
             if self.unfolding.is_zero_length(e) {
                 let other = mesh.edge(e).other(v).expect("an edge of the vertex");
-                self.improve_vertex_via(other, distance.clone(), source, Some(v));
+                self.improve_vertex(other, distance.clone(), source);
             }
         }
     }

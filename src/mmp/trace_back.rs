@@ -105,16 +105,23 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     if let Some(k) = self.source_at_vertex(v) {
                         return Ok(self.finish(simplices, distance, k));
                     }
-                    // Reached across an edge of length zero: the path goes on from the twin.
-                    if let Some(twin) = self.vertices[v.index()].as_ref().and_then(|d| d.twin) {
-                        via = Via::Vertex(twin);
-                        continue;
+                    // The path may hop at no cost to a vertex at the same place (across edges
+                    // of length zero), and goes on from whichever was reached through a face
+                    // that is not degenerate.
+                    let (u, arrival) = self
+                        .twins(v)
+                        .into_iter()
+                        .filter_map(|u| self.arrival_at_vertex(u).map(|b| (u, b)))
+                        .min_by(|(_, a), (_, b)| self.better_arrival(a, b))
+                        .ok_or(TraceError::Unreachable)?;
+                    if u != v {
+                        push_point(&mut simplices, SurfacePoint::Vertex(u));
+                        if let Some(k) = self.source_at_vertex(u) {
+                            return Ok(self.finish(simplices, distance, k));
+                        }
                     }
-                    via = self
-                        .arrival_at_vertex(v)
-                        .ok_or(TraceError::Unreachable)?
-                        .via;
-                    start = Some(v);
+                    via = arrival.via;
+                    start = Some(u);
                     continue;
                 }
                 Via::Wedge {
@@ -159,6 +166,35 @@ impl<S: Scalar> GeodesicField<'_, S> {
         }
     }
 
+    /// The vertex and those at the same place, joined to it by edges of length zero.
+    fn twins(&self, v: VertexId) -> Vec<VertexId> {
+        let mut group = vec![v];
+        let mut next = 0;
+        while next < group.len() {
+            for &e in self.mesh.vertex_edges(group[next]) {
+                if self.unfolding.is_zero_length(e) {
+                    let u = self.mesh.edge(e).other(group[next]).expect("an edge of the vertex");
+                    if !group.contains(&u) {
+                        group.push(u);
+                    }
+                }
+            }
+            next += 1;
+        }
+        group
+    }
+
+    /// Orders two arrivals at a vertex: the shorter first and, on a tie, the one not through
+    /// a degenerate face (where a walk has no room to find its way).
+    fn better_arrival(&self, a: &Best<S>, b: &Best<S>) -> Ordering {
+        let degenerate = |x: &Best<S>| {
+            matches!(x.via, Via::Wedge { face, .. } if self.mesh.is_degenerate_face(face))
+        };
+        a.distance
+            .compare_distance(&b.distance)
+            .then(degenerate(a).cmp(&degenerate(b)))
+    }
+
     fn source_at_vertex(&self, v: VertexId) -> Option<usize> {
         self.sources
             .iter()
@@ -177,7 +213,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             if let Some(found) = found {
                 if best
                     .as_ref()
-                    .is_none_or(|b| found.distance.compare_distance(&b.distance) == Ordering::Less)
+                    .is_none_or(|b| self.better_arrival(&found, b) == Ordering::Less)
                 {
                     best = Some(found);
                 }
@@ -373,10 +409,12 @@ impl<S: Scalar> GeodesicField<'_, S> {
             };
             // From a corner of the face the line leaves by the opposite side; from elsewhere,
             // by the side the apex is on.
+            // A start at a vertex at the same place as a corner starts from that corner.
             let [p0, p1] = self.mesh.edge(walk.edge).vertices;
-            let near = match walk.start {
-                Some(v) if v == p0 => false,
-                Some(v) if v == p1 => true,
+            let start = walk.start.map(|v| self.twins(v));
+            let near = match start {
+                Some(group) if group.contains(&p0) => false,
+                Some(group) if group.contains(&p1) => true,
                 _ => S::orientation([&r.x, &r.y], [&s.x, &s.y], [&cx, &cy]) == Sign::Positive,
             };
             let chosen = exit(near);
