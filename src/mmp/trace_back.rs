@@ -173,7 +173,11 @@ impl<S: Scalar> GeodesicField<'_, S> {
         while next < group.len() {
             for &e in self.mesh.vertex_edges(group[next]) {
                 if self.unfolding.is_zero_length(e) {
-                    let u = self.mesh.edge(e).other(group[next]).expect("an edge of the vertex");
+                    let u = self
+                        .mesh
+                        .edge(e)
+                        .other(group[next])
+                        .expect("an edge of the vertex");
                     if !group.contains(&u) {
                         group.push(u);
                     }
@@ -187,9 +191,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// Orders two arrivals at a vertex: the shorter first and, on a tie, the one not through
     /// a degenerate face (where a walk has no room to find its way).
     fn better_arrival(&self, a: &Best<S>, b: &Best<S>) -> Ordering {
-        let degenerate = |x: &Best<S>| {
-            matches!(x.via, Via::Wedge { face, .. } if self.mesh.is_degenerate_face(face))
-        };
+        let degenerate = |x: &Best<S>| matches!(x.via, Via::Wedge { face, .. } if self.mesh.is_degenerate_face(face));
         a.distance
             .compare_distance(&b.distance)
             .then(degenerate(a).cmp(&degenerate(b)))
