@@ -253,10 +253,17 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// For a wedge on an edge ending at the vertex `at`: whether the way from the vertex to the
     /// pseudo-source starts inside the face on the wedge's side (within its corner there). A
     /// wedge covers its edge's end vertices only with the boundary ray of its range, which may
-    /// reach the vertex through another face. Wedges along the edge's line always qualify.
+    /// reach the vertex through another face. Wedges along the edge's line qualify when their
+    /// pseudo-source lies on the edge's side of the vertex.
     fn ray_enters_corner(&self, w: &Wedge<S>, at: &Planar<S>) -> bool {
         if w.source_y.sign() == Sign::Zero {
-            return true;
+            // Along the line, it arrives by the edge only from a pseudo-source on the edge's
+            // side of the vertex; from beyond, its way passes through the vertex elsewhere.
+            return if at.x.sign() == Sign::Zero {
+                w.source_x.sign() != Sign::Negative
+            } else {
+                w.source_x.compare(&at.x) != Ordering::Greater
+            };
         }
         let Some((cx, h)) = self.unfolding.apex(w.edge, w.tau.index()) else {
             return false;
