@@ -106,20 +106,35 @@ impl<S: Scalar> GeodesicField<'_, S> {
                         return Ok(self.finish(simplices, distance, k));
                     }
                     // The path may hop at no cost to a vertex at the same place (across edges
-                    // of length zero), and goes on from whichever was reached through a face
-                    // that is not degenerate.
-                    let (u, arrival) = self
-                        .twins(v)
-                        .into_iter()
-                        .filter_map(|u| self.arrival_at_vertex(u).map(|b| (u, b)))
+                    // of length zero): to a source, or else to whichever was reached through a
+                    // face that is not degenerate.
+                    let twins = self.twins(v);
+                    let hop = |simplices: &mut Vec<SurfacePoint>, mut at: usize| {
+                        let mut chain = Vec::new();
+                        while let Some(parent) = twins[at].1 {
+                            chain.push(twins[at].0);
+                            at = parent;
+                        }
+                        for u in chain.into_iter().rev() {
+                            push_point(simplices, SurfacePoint::Vertex(u));
+                        }
+                    };
+                    if let Some((i, k)) = twins
+                        .iter()
+                        .enumerate()
+                        .find_map(|(i, &(u, _))| self.source_at_vertex(u).map(|k| (i, k)))
+                    {
+                        hop(&mut simplices, i);
+                        return Ok(self.finish(simplices, distance, k));
+                    }
+                    let (i, arrival) = twins
+                        .iter()
+                        .enumerate()
+                        .filter_map(|(i, &(u, _))| self.arrival_at_vertex(u).map(|b| (i, b)))
                         .min_by(|(_, a), (_, b)| self.better_arrival(a, b))
                         .ok_or(TraceError::Unreachable)?;
-                    if u != v {
-                        push_point(&mut simplices, SurfacePoint::Vertex(u));
-                        if let Some(k) = self.source_at_vertex(u) {
-                            return Ok(self.finish(simplices, distance, k));
-                        }
-                    }
+                    hop(&mut simplices, i);
+                    let u = twins[i].0;
                     via = arrival.via;
                     start = Some(u);
                     continue;
@@ -166,20 +181,18 @@ impl<S: Scalar> GeodesicField<'_, S> {
         }
     }
 
-    /// The vertex and those at the same place, joined to it by edges of length zero.
-    fn twins(&self, v: VertexId) -> Vec<VertexId> {
-        let mut group = vec![v];
+    /// The vertex and those at the same place, joined to it by edges of length zero, each
+    /// with the index of the one it was found from (`None` for the vertex itself).
+    fn twins(&self, v: VertexId) -> Vec<(VertexId, Option<usize>)> {
+        let mut group = vec![(v, None)];
         let mut next = 0;
         while next < group.len() {
-            for &e in self.mesh.vertex_edges(group[next]) {
+            let w = group[next].0;
+            for &e in self.mesh.vertex_edges(w) {
                 if self.unfolding.is_zero_length(e) {
-                    let u = self
-                        .mesh
-                        .edge(e)
-                        .other(group[next])
-                        .expect("an edge of the vertex");
-                    if !group.contains(&u) {
-                        group.push(u);
+                    let u = self.mesh.edge(e).other(w).expect("an edge of the vertex");
+                    if group.iter().all(|&(x, _)| x != u) {
+                        group.push((u, Some(next)));
                     }
                 }
             }
@@ -421,9 +434,11 @@ impl<S: Scalar> GeodesicField<'_, S> {
             // A start at a vertex at the same place as a corner starts from that corner.
             let [p0, p1] = self.mesh.edge(walk.edge).vertices;
             let start = walk.start.map(|v| self.twins(v));
+            let starts_at =
+                |p: VertexId| start.as_ref().is_some_and(|g| g.iter().any(|t| t.0 == p));
             let near = match start {
-                Some(group) if group.contains(&p0) => false,
-                Some(group) if group.contains(&p1) => true,
+                Some(_) if starts_at(p0) => false,
+                Some(_) if starts_at(p1) => true,
                 _ => S::orientation([&r.x, &r.y], [&s.x, &s.y], [&cx, &cy]) == Sign::Positive,
             };
             let chosen = exit(near);
