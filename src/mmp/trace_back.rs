@@ -130,7 +130,9 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     let (i, arrival) = twins
                         .iter()
                         .enumerate()
-                        .filter_map(|(i, &(u, _))| self.arrival_at_vertex(u).map(|b| (i, b)))
+                        .filter_map(|(i, &(u, _))| {
+                            self.arrival_at_vertex(u, &twins).map(|b| (i, b))
+                        })
                         .min_by(|(_, a), (_, b)| self.better_arrival(a, b))
                         .ok_or(TraceError::Unreachable)?;
                     hop(&mut simplices, i);
@@ -216,13 +218,18 @@ impl<S: Scalar> GeodesicField<'_, S> {
             .position(|s| *s == SurfacePoint::Vertex(v))
     }
 
-    /// How a vertex was reached, excluding the wedges it emitted itself: wedges on the opposite
+    /// How a vertex was reached, excluding the wedges it (or a twin, in `twins`) emitted itself: wedges on the opposite
     /// edges of its faces that see it from beyond, or, only where strictly better, wedges along
     /// its edges that cover it (a path arriving along an edge). The first kind is preferred on
     /// ties because the straight way back then starts inside a known face; a wedge along an edge
     /// may cover the vertex only with the boundary ray of its range.
-    pub(crate) fn arrival_at_vertex(&self, v: VertexId) -> Option<Best<S>> {
-        let own = PseudoSource::Vertex(v);
+    pub(crate) fn arrival_at_vertex(
+        &self,
+        v: VertexId,
+        twins: &[(VertexId, Option<usize>)],
+    ) -> Option<Best<S>> {
+        // The wedges a vertex, or one at its place, emitted itself lead nowhere new.
+        let own = |w: &Wedge<S>| matches!(w.pseudo_source, PseudoSource::Vertex(u) if twins.iter().any(|t| t.0 == u));
         let mut best: Option<Best<S>> = None;
         let mut consider = |found: Option<Best<S>>| {
             if let Some(found) = found {
@@ -244,7 +251,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             let Some((x, y)) = self.unfolding.apex(edge, side).cloned() else {
                 continue;
             };
-            let beyond = |w: &Wedge<S>| w.pseudo_source != own && w.tau.index() != side;
+            let beyond = |w: &Wedge<S>| !own(w) && w.tau.index() != side;
             consider(self.best_through_edge(edge, face, &Planar { x, y }, beyond));
         }
         for &edge in self.mesh.vertex_edges(v) {
@@ -255,7 +262,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 self.unfolding.length(edge).clone()
             };
             let at = Planar { x, y: S::zero() };
-            let arrives = |w: &Wedge<S>| w.pseudo_source != own && self.ray_enters_corner(w, &at);
+            let arrives = |w: &Wedge<S>| !own(w) && self.ray_enters_corner(w, &at);
             for face in e.faces.into_iter().flatten() {
                 consider(self.best_through_edge(edge, face, &at, arrives));
             }
