@@ -37,9 +37,9 @@ pub struct ValidationReport {
 }
 
 impl ValidationReport {
-    /// Edge length spans beyond this get a warning: the float backends' distances may then
-    /// be off by more than 1e-10 relative.
-    pub const WIDE_SPAN: f64 = 1e6;
+    /// Edge length spans beyond this (`2^12`) get a warning: the float backends' distances may
+    /// then be off by more than 1e-12 relative (`f64::EPSILON * 2^12` is about 9e-13).
+    pub const WIDE_SPAN: f64 = 4096.0;
 
     /// Human-readable warnings, one per kind of condition, empty for a clean closed mesh.
     pub fn warnings(&self) -> Vec<String> {

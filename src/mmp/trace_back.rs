@@ -325,13 +325,19 @@ impl<S: Scalar> GeodesicField<'_, S> {
         if at.y.sign() == Sign::Zero {
             // On the edge itself: the way to the pseudo-source starts in the face on its side.
             let face = e.faces[w.tau.index()].ok_or_else(lost)?;
-            // A vertex inside the edge (the middle corner of a degenerate face) is also that
-            // point of the edge, which the face beyond has in its closure.
-            if let Some(SurfacePoint::Vertex(v)) = simplices.last() {
-                if !e.vertices.contains(v) {
-                    let point = edge_point(edge, &at.x, self.unfolding.length(edge));
-                    push_point(simplices, point);
-                }
+            // A point on the edge but named otherwise (a vertex in the middle of a degenerate
+            // face, a point of a degenerate face) is also that point of the edge, which the
+            // face the walk starts in has in its closure.
+            let named_on_edge = match simplices.last() {
+                Some(SurfacePoint::Vertex(v)) => e.vertices.contains(v),
+                Some(SurfacePoint::Edge { edge: on, .. }) => *on == edge,
+                _ => false,
+            };
+            if !named_on_edge {
+                push_point(
+                    simplices,
+                    edge_point(edge, &at.x, self.unfolding.length(edge)),
+                );
             }
             return Ok(Step::Walk(Walk {
                 edge,
