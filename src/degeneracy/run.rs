@@ -330,6 +330,7 @@ mod tests {
                 })
                 .collect(),
             uncertified_decisions: 2,
+            beyond_float_range: false,
         }
     }
 

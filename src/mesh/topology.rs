@@ -92,7 +92,7 @@ const FLOAT_RESOLUTION: f64 = 3.054936363499605e-151;
 /// (below `2^-1022` it rounds to subnormals, which only a model spanning more than 300
 /// orders of magnitude reaches).
 fn unit_scale(positions: &[[f64; 3]]) -> f64 {
-    const COMFORTABLE: f64 = 18446744073709551616.0; // 2^64
+    const COMFORTABLE: f64 = TWO_TO_64;
     let largest = positions
         .iter()
         .flatten()
@@ -107,9 +107,23 @@ fn unit_scale(positions: &[[f64; 3]]) -> f64 {
 /// The power of two `p` with `m p` in `[1, 2)` for a positive finite `m`, kept within
 /// `2^-1022 ..= 2^1022` (so that it and its inverse are normal numbers).
 pub(crate) fn normalizing_power(m: f64) -> f64 {
-    let exponent = m.log2().floor() as i32;
+    // The binary exponent, read off the bits (subnormals first brought into the normal range).
+    let (m, shift) = if m < f64::MIN_POSITIVE {
+        (m * TWO_TO_64, 64)
+    } else {
+        (m, 0)
+    };
+    let exponent = ((m.to_bits() >> 52) & 0x7ff) as i32 - 1023 - shift;
     let power = (-exponent).clamp(-1022, 1022);
     f64::from_bits(((power + 1023) as u64) << 52)
+}
+
+const TWO_TO_64: f64 = 18446744073709551616.0;
+
+/// Whether squares and products of numbers up to `m` in magnitude stay normal `f64`s, so that
+/// no scaling is needed.
+fn squares_safely(m: f64) -> bool {
+    (1e-150..=1e150).contains(&m)
 }
 
 /// `v` scaled to unit length, computed without overflow or underflow; `None` for the zero
@@ -119,7 +133,11 @@ fn unit(v: [f64; 3]) -> Option<[f64; 3]> {
     if largest == 0.0 {
         return None;
     }
-    let v = v.map(|c| c * normalizing_power(largest));
+    let v = if squares_safely(largest) {
+        v
+    } else {
+        v.map(|c| c * normalizing_power(largest))
+    };
     let norm = dot(v, v).sqrt();
     Some(v.map(|c| c / norm))
 }
@@ -129,6 +147,9 @@ fn length(v: [f64; 3]) -> f64 {
     let largest = v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
     if largest == 0.0 {
         return 0.0;
+    }
+    if squares_safely(largest) {
+        return dot(v, v).sqrt();
     }
     let power = normalizing_power(largest);
     let v = v.map(|c| c * power);

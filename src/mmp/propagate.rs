@@ -316,11 +316,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 kind: EventKind::Vertex(v),
             });
         }
-        let mesh = self.mesh;
-        for &e in mesh.vertex_edges(v) {
-            if self.unfolding.is_zero_length(e) {
-                let other = mesh.edge(e).other(v).expect("an edge of the vertex");
-                self.improve_vertex(other, distance.clone(), source);
+        if self.unfolding.has_twin(v) {
+            let mesh = self.mesh;
+            for &e in mesh.vertex_edges(v) {
+                if self.unfolding.is_zero_length(e) {
+                    let other = mesh.edge(e).other(v).expect("an edge of the vertex");
+                    self.improve_vertex(other, distance.clone(), source);
+                }
             }
         }
     }

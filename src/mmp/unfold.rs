@@ -31,6 +31,8 @@ pub(crate) struct Unfolding<S> {
     /// Whether the edge has length zero (its ends coincide): no wedge lives on it, and no
     /// point is laid out in its frame.
     zero_length: Vec<bool>,
+    /// Whether a vertex ends an edge of length zero (has a twin at its place).
+    has_twin: Vec<bool>,
     /// `apex[2 e + side]`: `(x, h)` of the apex of the face on `side` of edge `e`, `h >= 0`.
     apex: Vec<Option<(S, S)>>,
     /// The mesh's unit scale.
@@ -113,8 +115,14 @@ impl<S: Scalar> Unfolding<S> {
         let mut edge_length = Vec::with_capacity(edge_count);
         let mut zero_length = Vec::with_capacity(edge_count);
         let mut apex = Vec::with_capacity(2 * edge_count);
+        let mut has_twin = vec![false; mesh.vertex_count()];
         for (i, e) in mesh.edges().iter().enumerate() {
             let frame = EdgeFrame::<S>::new(mesh, e.vertices[0], e.vertices[1]);
+            if frame.is_none() {
+                for v in e.vertices {
+                    has_twin[v.index()] = true;
+                }
+            }
             edge_length.push(frame.as_ref().map_or_else(S::zero, EdgeFrame::length));
             zero_length.push(frame.is_none());
             for side in 0..2 {
@@ -128,6 +136,7 @@ impl<S: Scalar> Unfolding<S> {
         Unfolding {
             edge_length,
             zero_length,
+            has_twin,
             apex,
             scale: mesh.unit_scale(),
         }
@@ -142,6 +151,12 @@ impl<S: Scalar> Unfolding<S> {
     #[inline]
     pub(crate) fn is_zero_length(&self, e: EdgeId) -> bool {
         self.zero_length[e.index()]
+    }
+
+    /// Whether the vertex ends an edge of length zero.
+    #[inline]
+    pub(crate) fn has_twin(&self, v: VertexId) -> bool {
+        self.has_twin[v.index()]
     }
 
     /// `(x, h)` of the apex of the face on `side` of `e` (`None` without a face there, or on

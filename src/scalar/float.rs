@@ -143,35 +143,15 @@ impl Scalar for f64 {
             roots[0] = bisect(f, lo, hi, f_lo);
             found = 1;
         }
-        // Rounded roots may be extraneous (eq. (2) squares eq. (1) twice) or mislocated where
-        // eq. (2) is ill-conditioned: keep a root as a crossing only where eq. (1) changes
-        // sign between the middles of the pieces beside it, as a touching point where a
-        // double root leaves the sign as it is. A tie counts as either sign.
-        let side = |from: f64, to: f64| {
-            let mid = 0.5 * (from + to);
-            compare_with_tie(a.at(&mid), b.at(&mid), FloatTolerance::DISTANCE)
-        };
-        let mut kept = [(0.0, false); 2];
-        let mut count = 0;
-        let mut start = lo;
-        for (i, &r) in roots[..found].iter().enumerate() {
-            let end = if i + 1 < found { roots[i + 1] } else { hi };
-            let (before, after) = (side(start, r), side(r, end));
-            let same = before == after && before != Ordering::Equal;
-            if !same {
-                kept[count] = (r, true);
-                count += 1;
-                start = r;
-            } else if touching && found == 1 {
-                kept[count] = (r, false);
-                count += 1;
-            }
-        }
-        match kept[..count] {
+        // A single root is a touching point only if eq. (1) keeps its sign across the range
+        // (with equal sigmas, eq. (2) is the square of a line's equation: a double root that
+        // crosses). Which wedge is lower on each piece is the engine's to ask.
+        touching = touching && f_lo * f_hi > 0.0;
+        match roots[..found] {
             [] => BisectorRoots::None,
-            [(r, false)] => BisectorRoots::Touch(r),
-            [(r, true)] => BisectorRoots::One(r),
-            [(r, _), (s, _)] => BisectorRoots::Two(r, s),
+            [r] if touching => BisectorRoots::Touch(r),
+            [r] => BisectorRoots::One(r),
+            [r, s] => BisectorRoots::Two(r, s),
             _ => unreachable!("a quadratic has at most two roots"),
         }
     }
