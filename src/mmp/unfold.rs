@@ -380,3 +380,78 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::{Adaptive, Real, Ring};
+
+    /// A unit square split along the edge from (0, 0) to (1, 1); the face below that edge has
+    /// its apex at (1, 0).
+    fn square() -> TriMesh {
+        TriMesh::new(
+            vec![
+                [0.0, 0.0, 0.0],
+                [1.0, 0.0, 0.0],
+                [1.0, 1.0, 0.0],
+                [0.0, 1.0, 0.0],
+            ],
+            vec![[0, 1, 2], [0, 2, 3]],
+        )
+        .expect("a square")
+    }
+
+    /// Rays from a pseudo-source straight above the apex's shadow pass it on the side of the
+    /// point of the edge they go through, and through it exactly at the shadow.
+    fn rays_pass_the_apex_on_their_side<S: Scalar>() {
+        let mesh = square();
+        let unfolding = Unfolding::<S>::new(&mesh);
+        let e = mesh
+            .edge_between(VertexId(0), VertexId(2))
+            .expect("the diagonal");
+        let side = (0..2)
+            .find(|&s| mesh.wing(e, s).is_some_and(|w| w.apex == VertexId(1)))
+            .expect("the face with apex (1, 0)");
+        let layout = FaceLayout::new(&mesh, &unfolding, e, side).expect("a face");
+        // A pseudo-source straight above the apex casts its shadow at the apex's own x.
+        let s = Planar {
+            x: layout.apex_x.clone(),
+            y: S::from_f64(3.0),
+        };
+        let quarter = unfolding.length(e).clone() * &S::from_f64(0.25);
+        assert_eq!(layout.ray_side(&s, &quarter), Ordering::Less);
+        assert_eq!(layout.ray_side(&s, layout.apex_x), Ordering::Equal);
+        let three_quarters = unfolding.length(e).clone() * &S::from_f64(0.75);
+        assert_eq!(layout.ray_side(&s, &three_quarters), Ordering::Greater);
+    }
+
+    #[test]
+    fn ray_side_in_every_backend() {
+        rays_pass_the_apex_on_their_side::<f64>();
+        rays_pass_the_apex_on_their_side::<Adaptive>();
+        rays_pass_the_apex_on_their_side::<Real>();
+    }
+
+    #[test]
+    fn an_edge_of_length_zero_has_no_frame_and_no_apex() {
+        let mesh = TriMesh::new(
+            vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]],
+            vec![[0, 1, 2]],
+        )
+        .expect("a degenerate face is a usable mesh");
+        let unfolding = Unfolding::<Real>::new(&mesh);
+        let e = mesh
+            .edge_between(VertexId(0), VertexId(2))
+            .expect("the zero-length edge");
+        assert!(unfolding.is_zero_length(e));
+        assert!(unfolding.has_twin(VertexId(0)) && unfolding.has_twin(VertexId(2)));
+        assert!(!unfolding.has_twin(VertexId(1)));
+        assert!(unfolding.apex(e, 0).is_none());
+        let p = [
+            Real::from_f64(0.5),
+            Real::from_f64(0.0),
+            Real::from_f64(0.0),
+        ];
+        assert!(unfolding.planar(&mesh, e, &p).is_none());
+    }
+}
