@@ -1,15 +1,12 @@
 //! The degenerate-mesh corpus (issue 10: no silently wrong answer on degenerate input, in any
 //! backend): every invariant of `degeneracy::check_invariants` on random cases of every kind of
-//! degeneracy, in each backend, and each failure once found kept as a named case.
+//! degeneracy, in each backend, and each failure once found kept as a named case. The meshes of
+//! the issue itself are in `degenerate_regressions.rs`, with their closed-form answers.
 
 mod common;
 
 use common::strategies::degenerate_case;
-use exact_geodesics::degeneracy::{
-    check_invariants, run_case, Backend, CaseReport, DegenerateKind, Tolerances,
-};
-use exact_geodesics::scalar::{Adaptive, Real};
-use exact_geodesics::{Scalar, TriMesh, VertexId};
+use exact_geodesics::degeneracy::{run_case, Backend, CaseReport, DegenerateKind};
 use proptest::prelude::*;
 
 fn describe(report: &CaseReport) -> String {
@@ -121,40 +118,4 @@ beyond_float_range! {
         MixedMagnitudes, 17189161910051005891;
     f64_mixed_magnitudes_3916747395894956443_is_beyond_float_range_and_keeps_reachability:
         MixedMagnitudes, 3916747395894956443;
-}
-
-/// The mesh of issue 10: v0 and v2 coincide, joined by a zero-length edge; from v0, v3 is
-/// 0.1414 away along the edge (v2, v3).
-fn issue10_mesh() -> TriMesh {
-    let positions = vec![
-        [0.4, 0.2, 0.0],
-        [0.5, 0.1, 0.0],
-        [0.4, 0.2, 0.0],
-        [0.5, 0.30000000000000004, 0.0],
-        [0.6000000000000001, 0.2, 0.0],
-        [0.4, 0.30000000000000004, 0.0],
-    ];
-    let faces = vec![[1, 2, 0], [0, 2, 5], [1, 4, 2], [2, 4, 3], [2, 3, 5]];
-    TriMesh::new(positions, faces).expect("a usable mesh")
-}
-
-fn issue10_keeps_invariants<S: Scalar, R: Scalar>(tolerances: &Tolerances) {
-    let mesh = issue10_mesh();
-    let report = check_invariants::<S, R>(&mesh, VertexId(0), VertexId(3), 10, tolerances);
-    assert!(report.violations.is_empty(), "{:#?}", report.violations);
-}
-
-#[test]
-fn issue10_vertex_beside_a_coincident_copy_of_the_source_is_within_its_edge_in_f64() {
-    issue10_keeps_invariants::<f64, Adaptive>(&Tolerances::FLOAT);
-}
-
-#[test]
-fn issue10_vertex_beside_a_coincident_copy_of_the_source_is_within_its_edge_in_adaptive() {
-    issue10_keeps_invariants::<Adaptive, f64>(&Tolerances::FLOAT);
-}
-
-#[test]
-fn issue10_vertex_beside_a_coincident_copy_of_the_source_is_within_its_edge_in_exact() {
-    issue10_keeps_invariants::<Real, f64>(&Tolerances::EXACT);
 }
