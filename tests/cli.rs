@@ -330,3 +330,25 @@ fn compare_reports_example1_symmetric_wedges_case_by_case() {
         }
     }
 }
+
+#[test]
+fn distance_csv_writes_extreme_magnitudes_in_exponent_form() {
+    // A right triangle with legs 1e-150: distances in shortest round-trip form, not 150 zeros.
+    let obj = "v 0 0 0\nv 1e-150 0 0\nv 0 1e-150 0\nf 1 2 3\n";
+    let path = temp_file("tiny.obj", obj);
+    let text = stdout(&run(&[
+        "distance",
+        path.to_str().expect("utf-8"),
+        "--source",
+        "v:0",
+    ]));
+    let row = text.lines().nth(2).expect("vertex 1");
+    let d: f64 = row
+        .split(',')
+        .nth(1)
+        .expect("a distance")
+        .parse()
+        .expect("a number");
+    assert!((d - 1e-150).abs() <= 1e-165, "{row}");
+    assert!(row.len() < 40 && row.contains('e'), "{row}");
+}

@@ -42,7 +42,7 @@ fn render<S: Scalar>(field: &GeodesicField<'_, S>, format: DistanceFormat) -> St
             out.push_str("vertex,distance,source\n");
             for (v, d, s) in rows {
                 let s = s.map(|s| s.to_string()).unwrap_or_default();
-                writeln!(out, "{v},{d},{s}").expect("writing to a String");
+                writeln!(out, "{v},{},{s}", Shortest(d)).expect("writing to a String");
             }
             out
         }
@@ -59,6 +59,21 @@ fn render<S: Scalar>(field: &GeodesicField<'_, S>, format: DistanceFormat) -> St
             .expect("JSON of plain values");
             out.push('\n');
             out
+        }
+    }
+}
+
+/// An `f64` in its shortest round-trip form: plain decimals in everyday magnitudes, exponent
+/// notation beyond them (`1e-150`, not 150 zeros).
+struct Shortest(f64);
+
+impl std::fmt::Display for Shortest {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let x = self.0;
+        if x == 0.0 || !x.is_finite() || (1e-5..1e16).contains(&x.abs()) {
+            write!(f, "{x}")
+        } else {
+            write!(f, "{x:e}")
         }
     }
 }
