@@ -68,7 +68,8 @@ pub struct CaseReport {
     pub uncertified_decisions: u64,
     /// Whether the mesh lies beyond the float backends' documented accuracy (its edge lengths
     /// span more than [`ValidationReport::WIDE_SPAN`], which the report warns of): no backend is
-    /// then compared with a float reference, and a float backend is held only to the
+    /// then compared with a float reference nor its path's f64 points measured against its
+    /// distance, and a float backend is held only to the
     /// invariants that do not measure accuracy (no panic or error, zero at the source,
     /// reachability), never to bounds, symmetry or traces.
     pub beyond_float_range: bool,
@@ -122,12 +123,16 @@ pub fn run_case(backend: Backend, mesh_kind: DegenerateKind, seed: u64) -> CaseR
     }));
     match outcome {
         Ok((mut found, beyond)) => {
-            // Beyond the float backends' range, a float result is no reference, and a float
-            // backend is held to what it owes on any input.
+            // Beyond the float backends' range, a float result is no reference, a traced
+            // path's f64 points (edge points at an f64 fraction of edges up to 4096 times
+            // longer than others) are no measure of its length, and a float backend is held to
+            // what it owes on any input.
             if beyond {
                 found.violations.retain(|v| {
-                    v.kind != ViolationKind::BackendsDisagree
-                        && (backend == Backend::Exact || !v.kind.measures_accuracy())
+                    !matches!(
+                        v.kind,
+                        ViolationKind::BackendsDisagree | ViolationKind::TraceLength
+                    ) && (backend == Backend::Exact || !v.kind.measures_accuracy())
                 });
             }
             report.violations = found.violations;

@@ -363,7 +363,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// Wedges at `sigma` from the point `p` onto every edge of `faces` (which contain it in
     /// their closure). Where `p` lies inside one of those edges (an edge through a degenerate
     /// face), the face beyond that edge contains it too and gets its wedges, and so on; faces
-    /// in `done` are left out.
+    /// in `done` are left out. A corner of those faces at `p` itself gets distance `sigma`.
     fn emit_from_point(
         &mut self,
         p: &[S; 3],
@@ -376,6 +376,14 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let mesh = self.mesh;
         done.extend(faces.iter().copied());
         while let Some(f) = faces.pop() {
+            // A corner at the point's very place (across degenerate faces, not joined to it
+            // by an edge) is that point: its distance is sigma, not a rounded copy of it.
+            for c in mesh.face(f) {
+                let q = self.unfolding.position(mesh, &SurfacePoint::Vertex(c));
+                if (0..3).all(|i| q[i].compare(&p[i]) == Ordering::Equal) {
+                    self.improve_vertex(c, sigma.clone(), k);
+                }
+            }
             for g in mesh.face_edges(f) {
                 let side = mesh.edge(g).side_of(f).expect("edge of the face");
                 // An edge of length zero carries no wedge.
