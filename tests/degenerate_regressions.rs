@@ -227,3 +227,20 @@ fn mixed_magnitude_slivers_agree_between_float_backends() {
         }
     }
 }
+
+#[test]
+fn paths_on_huge_and_tiny_triangles_have_their_lengths() {
+    for leg in [1e-300, 1e300] {
+        let mesh = right_triangle(leg);
+        let field = propagate::<f64>(
+            &mesh,
+            &[SurfacePoint::Vertex(VertexId(1))],
+            &PropagateOptions::default(),
+        )
+        .expect("valid source");
+        let path = field
+            .trace_back(&SurfacePoint::Vertex(VertexId(2)))
+            .expect("reached");
+        assert_close(path.length(), leg * 2f64.sqrt(), &format!("legs {leg}"));
+    }
+}

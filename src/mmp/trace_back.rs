@@ -28,13 +28,14 @@ pub struct GeodesicPath {
 }
 
 impl GeodesicPath {
-    /// The length of the polyline (equal to `distance` up to rounding).
+    /// The length of the polyline (equal to `distance` up to rounding), without overflow or
+    /// underflow at any scale.
     pub fn length(&self) -> f64 {
         self.points
             .windows(2)
             .map(|p| {
                 let d = [0, 1, 2].map(|i| p[1][i] - p[0][i]);
-                (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+                d[0].hypot(d[1]).hypot(d[2])
             })
             .sum()
     }
