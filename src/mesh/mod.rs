@@ -186,7 +186,10 @@ impl TriMesh {
     ///
     /// Corners of degenerate faces bend because their angle sums mean nothing: a vertex at the
     /// same place as another is, on the surface, the same point, so it must send wedges into
-    /// its own faces whenever its twin is reached (or is the source), whatever its angles.
+    /// its own faces whenever its twin is reached (or is the source), whatever its angles. The
+    /// ends of an edge shorter than `1e-8` of its face's longest edge bend too: the rays through
+    /// such an edge make windows narrower than a float backend keeps, and a path through one of
+    /// its ends is then the best a float backend can offer (within the edge's length).
     pub fn may_bend_geodesics(&self, v: VertexId) -> bool {
         /// Angle sums this close to 2 pi (relative) count as flat; acos-based sums carry ~1e-15.
         const FLAT_SLACK: f64 = 1e-9;

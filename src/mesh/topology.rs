@@ -80,6 +80,10 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     ]
 }
 
+/// An edge shorter than this fraction of its face's longest edge makes its ends pseudo-sources
+/// (see `TriMesh::may_bend_geodesics`).
+const SHORT_EDGE: f64 = 1e-8;
+
 /// Edges shorter than this, against a model whose largest coordinate is scaled to about 1,
 /// are beyond the float backends: their squared lengths underflow (`2^-1000` is near the
 /// smallest normal `f64`). `2^-500`.
@@ -353,6 +357,16 @@ impl Topology {
                 report.zero_area_faces.push(FaceId(fi as u32));
                 for &v in f {
                     on_degenerate_face[v as usize] = true;
+                }
+            }
+            // The ends of an edge far shorter than its face: the float backends keep no
+            // window narrower than 1e-11 of an edge, so the rays through it would be lost.
+            let lengths = face_edges[fi].map(|e| edge_length[e.index()]);
+            let longest = lengths.iter().fold(0.0f64, |m, &l| m.max(l));
+            for (k, &l) in lengths.iter().enumerate() {
+                if l < SHORT_EDGE * longest {
+                    on_degenerate_face[f[k] as usize] = true;
+                    on_degenerate_face[f[(k + 1) % 3] as usize] = true;
                 }
             }
             for i in 0..3 {
