@@ -263,7 +263,7 @@ fn cli_table2_ratio_is_mean_wedges_over_mean_length() {
         "--backend",
         "f64",
         "--backend",
-        "exact",
+        "adaptive",
         "--sources",
         "2",
         "--out",

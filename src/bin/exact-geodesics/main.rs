@@ -90,6 +90,16 @@ impl Backend {
     }
 }
 
+impl From<Backend> for exact_geodesics::scalar::Backend {
+    fn from(backend: Backend) -> Self {
+        match backend {
+            Backend::F64 => Self::F64,
+            Backend::Adaptive => Self::Adaptive,
+            Backend::Exact => Self::Exact,
+        }
+    }
+}
+
 /// Arguments every command shares: the mesh, the sources, the backend.
 #[derive(Args)]
 pub struct Common {
