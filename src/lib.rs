@@ -13,6 +13,7 @@
 
 pub mod benchmark_model;
 pub mod degeneracy;
+pub mod experiments;
 pub mod mesh;
 pub mod mmp;
 pub mod paper;

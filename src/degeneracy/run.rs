@@ -6,6 +6,7 @@ use super::generate::{degenerate_case, DegenerateKind, MeshSize};
 use super::invariants::{check_invariants, Tolerances, Violation, ViolationKind};
 use crate::mesh::shapes::SplitMix64;
 use crate::mesh::{ValidationReport, VertexId};
+pub use crate::scalar::Backend;
 use crate::scalar::{Adaptive, Real};
 use serde::Serialize;
 use std::any::Any;
@@ -13,18 +14,8 @@ use std::collections::BTreeMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::time::Instant;
 
-/// The backend under test.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Backend {
-    /// `f64`, checked against [`Adaptive`].
-    F64,
-    /// [`Adaptive`], checked against `f64`.
-    Adaptive,
-    /// [`Real`] (exact), checked against `f64`, on [`MeshSize::Small`] meshes.
-    Exact,
-}
-
+/// What the corpus does in each backend: `f64` is checked against [`Adaptive`], the others
+/// against `f64`; [`Real`] (exact) runs on [`MeshSize::Small`] meshes.
 impl Backend {
     /// The backend whose vertex distances this one's are compared with.
     pub fn reference(self) -> Backend {

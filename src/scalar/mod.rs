@@ -30,6 +30,7 @@ macro_rules! ops_by_reference_for_copy {
 
 mod adaptive;
 mod audit;
+mod backend;
 mod bisector;
 mod double_double;
 mod error_bound;
@@ -41,6 +42,7 @@ mod roots;
 
 pub use adaptive::{Adaptive, Resolution};
 pub use audit::{Certificate, DecisionCounts, DecisionSite, Site, Uncertainty};
+pub use backend::Backend;
 pub use bisector::{BisectorRoots, Eq2Case, Eq2Coefficients, SourceDistance};
 pub use exact::Real;
 pub use interval::Interval;

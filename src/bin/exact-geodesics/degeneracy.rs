@@ -3,7 +3,7 @@
 
 use crate::{emit, progress, Backend};
 use clap::Args;
-use exact_geodesics::degeneracy::{self, run_corpus};
+use exact_geodesics::degeneracy::run_corpus;
 use std::path::PathBuf;
 
 #[derive(Args)]
@@ -21,16 +21,6 @@ pub struct DegeneracyArgs {
     /// Write the summary to this file instead of stdout.
     #[arg(long)]
     out: Option<PathBuf>,
-}
-
-impl From<Backend> for degeneracy::Backend {
-    fn from(backend: Backend) -> Self {
-        match backend {
-            Backend::F64 => degeneracy::Backend::F64,
-            Backend::Adaptive => degeneracy::Backend::Adaptive,
-            Backend::Exact => degeneracy::Backend::Exact,
-        }
-    }
 }
 
 pub fn run(args: &DegeneracyArgs) -> Result<(), String> {

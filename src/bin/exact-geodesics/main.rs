@@ -6,6 +6,7 @@ mod benchmark_model;
 mod compare;
 mod degeneracy;
 mod distance;
+mod experiment;
 mod load;
 mod path;
 mod progress;
@@ -57,6 +58,10 @@ enum Command {
     /// The regions of one face, each closest to one image of a pseudo-source, and their
     /// bisectors [LZT Property 4, Fig. 15]; optionally drawn as SVG.
     Subdivision(subdivision::SubdivisionArgs),
+    /// The tables of [LZT §6] (Table 1: wedges per edge; Table 2: edge lengths and wedges per
+    /// unit length) over models, backends and seeded sources, as CSV and JSON.
+    #[command(subcommand_required = true)]
+    Experiment(experiment::ExperimentArgs),
     /// Runs the degenerate-mesh corpus and checks the invariants of every distance (JSON
     /// summary; fails if any is broken).
     Degeneracy(degeneracy::DegeneracyArgs),
@@ -81,6 +86,16 @@ impl Backend {
             Backend::F64 => "f64",
             Backend::Adaptive => "adaptive",
             Backend::Exact => "exact",
+        }
+    }
+}
+
+impl From<Backend> for exact_geodesics::scalar::Backend {
+    fn from(backend: Backend) -> Self {
+        match backend {
+            Backend::F64 => Self::F64,
+            Backend::Adaptive => Self::Adaptive,
+            Backend::Exact => Self::Exact,
         }
     }
 }
@@ -214,6 +229,7 @@ fn main() -> ExitCode {
         Command::Verify(args) => verify::run(args),
         Command::Subdivision(args) => subdivision::run(args),
         Command::Degeneracy(args) => degeneracy::run(args),
+        Command::Experiment(args) => experiment::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -31,6 +31,16 @@ pub fn bar(vertex_count: usize) -> ProgressBar {
     )
 }
 
+/// A bar over the vertices reached, headed by `label` (the model, backend and source).
+pub fn labelled_bar(vertex_count: usize, label: String) -> ProgressBar {
+    let bar = hidden_unless_terminal(
+        vertex_count as u64,
+        "{prefix} {elapsed_precise} [{bar:40}] {pos}/{len} vertices, front {msg}",
+    );
+    bar.set_prefix(label);
+    bar
+}
+
 /// Feeds an engine progress report into the bar.
 pub fn update(bar: &ProgressBar, p: &Progress) {
     bar.set_position(p.vertices_reached as u64);
