@@ -3,6 +3,7 @@
 //! minimal angle separates uniform from non-uniform models better (its minimum and mean).
 
 use super::Summary;
+use crate::mesh::vector::{angle, sub};
 use crate::{FaceId, TriMesh};
 
 /// The smallest interior angle of every face, in degrees, in face order.
@@ -27,7 +28,7 @@ pub fn min_angles_degrees(mesh: &TriMesh) -> Vec<f64> {
                     let o = corners[i];
                     let a = sub(corners[(i + 1) % 3], o);
                     let b = sub(corners[(i + 2) % 3], o);
-                    norm(cross(a, b)).atan2(dot(a, b)).to_degrees()
+                    angle(a, b).to_degrees()
                 })
                 .fold(f64::INFINITY, f64::min)
         })
@@ -45,24 +46,4 @@ pub fn min_angles_degrees(mesh: &TriMesh) -> Vec<f64> {
 /// ```
 pub fn min_angle_summary(mesh: &TriMesh) -> Summary {
     Summary::of(&min_angles_degrees(mesh)).expect("a TriMesh has at least one face")
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-fn norm(a: [f64; 3]) -> f64 {
-    dot(a, a).sqrt()
 }

@@ -10,12 +10,13 @@ pub mod io;
 pub mod shapes;
 mod topology;
 mod validation;
+pub(crate) mod vector;
 
 pub use error::MeshError;
 pub use ids::{EdgeId, FaceId, VertexId};
-pub(crate) use topology::normalizing_power;
 pub use topology::{Edge, Wing};
 pub use validation::ValidationReport;
+pub(crate) use vector::normalizing_power;
 
 /// A triangle mesh with its edge-face topology.
 ///

@@ -1,5 +1,6 @@
 //! Edge-face topology: undirected edges, the faces on each side, vertex stars.
 
+use super::vector::{angle, cross, length, normalizing_power, sub, unit, TWO_TO_64};
 use super::{EdgeId, FaceId, MeshError, ValidationReport, VertexId};
 use std::collections::HashMap;
 
@@ -66,20 +67,6 @@ pub(super) struct Topology {
     vertex_edge_list: Vec<EdgeId>,
 }
 
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
 /// An edge shorter than this fraction of its face's longest edge makes its ends pseudo-sources
 /// (see `TriMesh::may_bend_geodesics`).
 const SHORT_EDGE: f64 = 1e-8;
@@ -108,58 +95,6 @@ fn unit_scale(positions: &[[f64; 3]]) -> f64 {
     }
 }
 
-/// The power of two `p` with `m p` in `[1, 2)` for a positive finite `m`, kept within
-/// `2^-1022 ..= 2^1022` (so that it and its inverse are normal numbers).
-pub(crate) fn normalizing_power(m: f64) -> f64 {
-    // The binary exponent, read off the bits (subnormals first brought into the normal range).
-    let (m, shift) = if m < f64::MIN_POSITIVE {
-        (m * TWO_TO_64, 64)
-    } else {
-        (m, 0)
-    };
-    let exponent = ((m.to_bits() >> 52) & 0x7ff) as i32 - 1023 - shift;
-    let power = (-exponent).clamp(-1022, 1022);
-    f64::from_bits(((power + 1023) as u64) << 52)
-}
-
-const TWO_TO_64: f64 = 18446744073709551616.0;
-
-/// Whether squares and products of numbers up to `m` in magnitude stay normal `f64`s, so that
-/// no scaling is needed.
-fn squares_safely(m: f64) -> bool {
-    (1e-150..=1e150).contains(&m)
-}
-
-/// `v` scaled to unit length, computed without overflow or underflow; `None` for the zero
-/// vector.
-fn unit(v: [f64; 3]) -> Option<[f64; 3]> {
-    let largest = v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-    if largest == 0.0 {
-        return None;
-    }
-    let v = if squares_safely(largest) {
-        v
-    } else {
-        v.map(|c| c * normalizing_power(largest))
-    };
-    let norm = dot(v, v).sqrt();
-    Some(v.map(|c| c / norm))
-}
-
-/// The length of `v`, without overflow or underflow in its square.
-fn length(v: [f64; 3]) -> f64 {
-    let largest = v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-    if largest == 0.0 {
-        return 0.0;
-    }
-    if squares_safely(largest) {
-        return dot(v, v).sqrt();
-    }
-    let power = normalizing_power(largest);
-    let v = v.map(|c| c * power);
-    dot(v, v).sqrt() / power
-}
-
 /// Whether a triangle (in unit-scaled coordinates) is degenerate for the f64 geometry: its
 /// corners collinear to within rounding, or two of them coincident. The sine of its largest
 /// angle is then below a few ulps, and an unfolding computed in f64 across it means little.
@@ -175,15 +110,6 @@ fn is_degenerate(p: [[f64; 3]; 3]) -> bool {
     match (unit(sides[order[0]]), unit(sides[order[1]])) {
         (Some(u), Some(w)) => length(cross(u, w)) <= SINE,
         _ => true,
-    }
-}
-
-/// The angle between two vectors (0 if either is zero), computed on unit vectors so that it
-/// does not depend on their magnitudes.
-fn angle(u: [f64; 3], w: [f64; 3]) -> f64 {
-    match (unit(u), unit(w)) {
-        (Some(u), Some(w)) => length(cross(u, w)).atan2(dot(u, w)),
-        _ => 0.0,
     }
 }
 

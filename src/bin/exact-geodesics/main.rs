@@ -82,11 +82,7 @@ pub enum Backend {
 impl Backend {
     /// The name used on the command line and in reports.
     pub fn name(self) -> &'static str {
-        match self {
-            Backend::F64 => "f64",
-            Backend::Adaptive => "adaptive",
-            Backend::Exact => "exact",
-        }
+        exact_geodesics::scalar::Backend::from(self).name()
     }
 }
 

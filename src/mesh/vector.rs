@@ -1,0 +1,77 @@
+//! Small `f64` vector helpers for the mesh's own geometry (lengths, angles, degeneracy),
+//! computed without overflow or underflow whatever the model's units.
+
+pub(crate) fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+pub(crate) fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+pub(crate) fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// The power of two `p` with `m p` in `[1, 2)` for a positive finite `m`, kept within
+/// `2^-1022 ..= 2^1022` (so that it and its inverse are normal numbers).
+pub(crate) fn normalizing_power(m: f64) -> f64 {
+    // The binary exponent, read off the bits (subnormals first brought into the normal range).
+    let (m, shift) = if m < f64::MIN_POSITIVE {
+        (m * TWO_TO_64, 64)
+    } else {
+        (m, 0)
+    };
+    let exponent = ((m.to_bits() >> 52) & 0x7ff) as i32 - 1023 - shift;
+    let power = (-exponent).clamp(-1022, 1022);
+    f64::from_bits(((power + 1023) as u64) << 52)
+}
+
+pub(crate) const TWO_TO_64: f64 = 18446744073709551616.0;
+
+/// Whether squares and products of numbers up to `m` in magnitude stay normal `f64`s, so that
+/// no scaling is needed.
+fn squares_safely(m: f64) -> bool {
+    (1e-150..=1e150).contains(&m)
+}
+
+/// `v` scaled to unit length, computed without overflow or underflow; `None` for the zero
+/// vector.
+pub(crate) fn unit(v: [f64; 3]) -> Option<[f64; 3]> {
+    let largest = v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    if largest == 0.0 {
+        return None;
+    }
+    let v = if squares_safely(largest) {
+        v
+    } else {
+        v.map(|c| c * normalizing_power(largest))
+    };
+    let norm = dot(v, v).sqrt();
+    Some(v.map(|c| c / norm))
+}
+
+/// The length of `v`, without overflow or underflow in its square.
+pub(crate) fn length(v: [f64; 3]) -> f64 {
+    let largest = v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    if largest == 0.0 {
+        return 0.0;
+    }
+    if squares_safely(largest) {
+        return dot(v, v).sqrt();
+    }
+    let power = normalizing_power(largest);
+    let v = v.map(|c| c * power);
+    dot(v, v).sqrt() / power
+}
+
+/// The angle between two vectors (0 if either is zero), computed on unit vectors so that it
+/// does not depend on their magnitudes.
+pub(crate) fn angle(u: [f64; 3], w: [f64; 3]) -> f64 {
+    match (unit(u), unit(w)) {
+        (Some(u), Some(w)) => length(cross(u, w)).atan2(dot(u, w)),
+        _ => 0.0,
+    }
+}
