@@ -304,8 +304,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
             None => self.reached += 1,
         }
         let approx = distance.to_f64();
+        let twin_distance = self.unfolding.has_twin(v).then(|| distance.clone());
         *slot = Some(VertexDistance {
-            distance: distance.clone(),
+            distance,
             approx,
             source,
         });
@@ -316,7 +317,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 kind: EventKind::Vertex(v),
             });
         }
-        if self.unfolding.has_twin(v) {
+        if let Some(distance) = twin_distance {
             let mesh = self.mesh;
             for &e in mesh.vertex_edges(v) {
                 if self.unfolding.is_zero_length(e) {
