@@ -103,12 +103,9 @@ impl<S: Scalar> GeodesicField<'_, S> {
             let pseudo_source = match via {
                 Via::Vertex(v) => {
                     push_point(&mut simplices, SurfacePoint::Vertex(v));
-                    if let Some(k) = self.source_at_vertex(v) {
-                        return Ok(self.finish(simplices, distance, k));
-                    }
-                    // The path may hop at no cost to a vertex at the same place (across edges
-                    // of length zero): to a source, or else to whichever was reached through a
-                    // face that is not degenerate.
+                    // The path ends at the vertex if it is a source; it may hop at no cost to a
+                    // vertex at the same place (across edges of length zero): to a source, or
+                    // else to whichever was reached through a face that is not degenerate.
                     let twins = self.twins(v);
                     let hop = |simplices: &mut Vec<SurfacePoint>, mut at: usize| {
                         let mut chain = Vec::new();
