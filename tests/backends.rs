@@ -7,7 +7,7 @@ use exact_geodesics::mesh::shapes::{self, SplitMix64};
 use exact_geodesics::paper::examples::{
     eq2_of, unfold_named, EXAMPLE1, EXAMPLE1_EDGE, EXAMPLE3, EXAMPLE3_EDGE,
 };
-use exact_geodesics::scalar::exact::{Certificate, Uncertainty};
+use exact_geodesics::scalar::exact::{Certificate, Uncertainty, ZeroProof};
 use exact_geodesics::scalar::{
     Adaptive, BisectorRoots, Field, Real, Resolution, Ring, Scalar, Sign,
 };
@@ -29,7 +29,14 @@ fn assert_certified(x: &Real, sign: Sign) {
 fn sqrt2_squared_minus_2_is_a_certified_zero() {
     let r2 = int(2).sqrt();
     let x = r2.clone() * &r2 - int(2);
-    assert_eq!(x.certified_sign(), (Sign::Zero, Certificate::CertifiedZero));
+    // sqrt(2) * sqrt(2) - 2 has a square root below it and a zero normal form.
+    assert_eq!(
+        x.certified_sign(),
+        (
+            Sign::Zero,
+            Certificate::CertifiedZero(ZeroProof::NormalForm)
+        )
+    );
 }
 
 #[test]
@@ -329,4 +336,20 @@ fn adaptive_decides_meetings_with_underflowing_products() {
         BisectorRoots::One(r) => assert!((r.0 - 0.5).abs() < 1e-15, "{r:?}"),
         other => panic!("expected one crossing near 0.5, got {other:?}"),
     }
+}
+
+#[test]
+fn certified_zeros_are_counted_by_their_proof() {
+    Real::take_counts();
+    let r2 = int(2).sqrt();
+    assert_eq!((r2.clone() * &r2 - int(2)).sign(), Sign::Zero);
+    assert_eq!((r2.clone() - &int(1)).sign(), Sign::Positive);
+    let counts = Real::take_counts();
+    assert_eq!(counts.decisions, 2);
+    assert_eq!(counts.certified_zeros, 1);
+    assert_eq!(counts.zeros_by_normal_form, 1);
+    assert_eq!(
+        counts.zeros_by_rational_value + counts.zeros_by_separation_bound,
+        0
+    );
 }

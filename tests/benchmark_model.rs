@@ -399,10 +399,9 @@ fn exact_backend_distance_equals_the_ground_truth_exactly_on_small_scenes() {
         let engine = field.vertex_distance_exact(model.q).expect("q is reached");
         let truth = exact_length(&model.ground_truth.points);
         let (sign, how) = (engine.clone() - &truth).certified_sign();
-        assert_eq!(
-            (sign, how),
-            (Sign::Zero, Certificate::CertifiedZero),
-            "{:?}: engine {engine:?}, ground truth {truth:?}",
+        assert!(
+            sign == Sign::Zero && matches!(how, Certificate::CertifiedZero(_)),
+            "{:?}: {how:?}, engine {engine:?}, ground truth {truth:?}",
             scene.obstacles
         );
     }

@@ -59,6 +59,12 @@ pub struct DecisionCounts {
     /// Values proved to be exactly zero by the exact stage (a separation bound or a symbolic
     /// identity); a zero the filter sees as the point interval `[0, 0]` counts as filtered.
     pub certified_zeros: u64,
+    /// Of those, proved by exact rational evaluation (no square root below them).
+    pub zeros_by_rational_value: u64,
+    /// Of those, proved by a zero normal form in a tower of quadratic extensions.
+    pub zeros_by_normal_form: u64,
+    /// Of those, proved by an enclosure below the BFMSS separation bound.
+    pub zeros_by_separation_bound: u64,
     /// Decisions not certified: not within the precision cap, or of a value that divides by zero
     /// (reported, never passed off as exact).
     pub uncertified: u64,
@@ -76,10 +82,23 @@ pub enum Certificate {
     Filter,
     /// The exact stage: exact rationals, or a refined interval that excluded zero.
     Refinement,
-    /// Proved zero: below the separation bound, by a zero normal form, or by rational value.
-    CertifiedZero,
+    /// Proved zero, by the proof given.
+    CertifiedZero(ZeroProof),
     /// Not established, for the reason given; the sign given is zero.
     Uncertified(Uncertainty),
+}
+
+/// How a zero was proved.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ZeroProof {
+    /// Exact rational evaluation: no square root occurs in the value.
+    RationalValue,
+    /// The value's normal form in a tower of quadratic extensions is zero.
+    NormalForm,
+    /// An enclosure of the value lies below the BFMSS separation bound \[BFMSS01\], which no
+    /// non-zero value of its expression can.
+    SeparationBound,
 }
 
 impl Certificate {
@@ -106,7 +125,14 @@ pub(crate) fn record(settled: Certificate, enclosure: impl FnOnce() -> [f64; 2])
         match settled {
             Certificate::Filter => c.by_filter += 1,
             Certificate::Refinement => c.by_refinement += 1,
-            Certificate::CertifiedZero => c.certified_zeros += 1,
+            Certificate::CertifiedZero(proof) => {
+                c.certified_zeros += 1;
+                match proof {
+                    ZeroProof::RationalValue => c.zeros_by_rational_value += 1,
+                    ZeroProof::NormalForm => c.zeros_by_normal_form += 1,
+                    ZeroProof::SeparationBound => c.zeros_by_separation_bound += 1,
+                }
+            }
             Certificate::Uncertified(cause) => {
                 c.uncertified += 1;
                 if c.uncertified_sites.len() < KEPT_SITES {

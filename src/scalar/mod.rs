@@ -41,7 +41,7 @@ mod rational;
 mod roots;
 
 pub use adaptive::{Adaptive, Resolution};
-pub use audit::{Certificate, DecisionCounts, DecisionSite, Site, Uncertainty};
+pub use audit::{Certificate, DecisionCounts, DecisionSite, Site, Uncertainty, ZeroProof};
 pub use backend::Backend;
 pub use bisector::{BisectorRoots, Eq2Case, Eq2Coefficients, SourceDistance};
 pub use exact::Real;

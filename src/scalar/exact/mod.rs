@@ -27,7 +27,7 @@ mod node;
 mod normal_form;
 mod refine;
 
-pub use super::audit::{Certificate, Uncertainty};
+pub use super::audit::{Certificate, Uncertainty, ZeroProof};
 
 use super::audit::{self, DecisionCounts, Site};
 use super::roots::{self, CertifiedSign};
@@ -124,7 +124,12 @@ impl Real {
         if !node.has_sqrt {
             let sign = match refine::rational_value(node).cmp0() {
                 Ordering::Less => Sign::Negative,
-                Ordering::Equal => return (Sign::Zero, Certificate::CertifiedZero),
+                Ordering::Equal => {
+                    return (
+                        Sign::Zero,
+                        Certificate::CertifiedZero(ZeroProof::RationalValue),
+                    )
+                }
                 Ordering::Greater => Sign::Positive,
             };
             return (sign, Certificate::Refinement);
@@ -137,7 +142,10 @@ impl Real {
             return (Sign::Negative, Certificate::Refinement);
         }
         if normal_form::normal_form(node).is_some_and(|nf| nf.is_zero()) {
-            return (Sign::Zero, Certificate::CertifiedZero);
+            return (
+                Sign::Zero,
+                Certificate::CertifiedZero(ZeroProof::NormalForm),
+            );
         }
         let cap = precision_cap();
         let zero_bits = refine::zero_bound_bits(node, cap);
@@ -152,7 +160,10 @@ impl Real {
             }
             if let Some(bits) = zero_bits {
                 if below(&lo, bits) && below(&hi, bits) {
-                    return (Sign::Zero, Certificate::CertifiedZero);
+                    return (
+                        Sign::Zero,
+                        Certificate::CertifiedZero(ZeroProof::SeparationBound),
+                    );
                 }
             }
             if precision >= cap {
