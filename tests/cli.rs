@@ -3,16 +3,7 @@
 
 mod common;
 
-use common::cli::{fails_with, run, stdout};
-use std::path::PathBuf;
-
-fn temp_file(name: &str, text: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("exact-geodesics-cli-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let path = dir.join(name);
-    std::fs::write(&path, text).expect("temp file");
-    path
-}
+use common::cli::{fails_with, run, stdout, temp_file};
 
 #[test]
 fn distance_csv_has_one_row_per_vertex_with_nearest_source() {

@@ -4,16 +4,7 @@
 
 mod common;
 
-use common::cli::{refuses, run, stdout};
-use std::path::PathBuf;
-
-fn temp_file(name: &str, text: &[u8]) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("exact-geodesics-bad-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let path = dir.join(name);
-    std::fs::write(&path, text).expect("temp file");
-    path
-}
+use common::cli::{refuses, run, stdout, temp_file};
 
 #[test]
 fn barycentric_coordinates_near_f64_max_are_refused_not_a_panic() {

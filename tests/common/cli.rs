@@ -1,5 +1,6 @@
 //! Running the command-line tool from a test.
 
+use std::path::PathBuf;
 use std::process::{Command, Output};
 
 /// Runs `exact-geodesics` with `args`.
@@ -45,4 +46,13 @@ pub fn refuses(args: &[&str], needles: &[&str]) {
             "{args:?}: expected '{needle}' in: {err}"
         );
     }
+}
+
+/// Writes `contents` to a file `name` in this test process's own temporary directory.
+pub fn temp_file(name: &str, contents: impl AsRef<[u8]>) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("exact-geodesics-tests-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join(name);
+    std::fs::write(&path, contents).expect("temp file");
+    path
 }
