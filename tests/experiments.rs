@@ -131,6 +131,8 @@ fn cube_from_corner_0_has_one_wedge_per_edge_but_two_on_the_mirror_diagonal() {
         let counts = count_wedges_in(backend, &cube, VertexId(0), |_| {}).expect("a vertex");
         assert_eq!(counts.total, 19, "{backend:?}");
         assert_eq!(counts.edges_without_wedges, 0);
+        // Half of 19 wedges: the diagonal's 2 and 8 single ones, 9 of the 18 edges.
+        assert!(close(counts.edges_holding_half, 9.0 / 18.0), "{backend:?}");
         let w = counts.per_edge;
         assert_eq!((w.count, w.min, w.max), (18, 1.0, 2.0), "{backend:?}");
         assert!(close(w.mean, 19.0 / 18.0));

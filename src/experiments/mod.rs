@@ -43,4 +43,4 @@ pub use sources::random_sources;
 pub use summary::Summary;
 pub use tables::{ModelShape, Table1Row, Table2Row};
 pub use uniformity::{min_angle_summary, min_angles_degrees};
-pub use wedges::{count_wedges, count_wedges_in, WedgeCounts};
+pub use wedges::{count_wedges, count_wedges_in, share_holding_half, WedgeCounts};

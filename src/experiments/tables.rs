@@ -69,6 +69,8 @@ pub struct Table1Row {
     pub wedges_total: usize,
     /// Edges with w(e) = 0 (counted as zeros in the statistics).
     pub edges_without_wedges: usize,
+    /// The smallest fraction of the edges holding half of all wedges (Observation 1).
+    pub edges_holding_half: f64,
     /// The paper's uniformity: the largest per-face minimal angle, in degrees.
     pub min_angle_max: f64,
     /// Mean per-face minimal angle, in degrees.
@@ -106,8 +108,8 @@ pub struct Table2Row {
 impl Table1Row {
     /// The CSV header, in field order.
     pub const CSV_HEADER: &'static str = "model,backend,source,faces,edges,wedges_mean,wedges_std,\
-wedges_max,seconds,wedges_skewness,wedges_total,edges_without_wedges,min_angle_max,\
-min_angle_mean,min_angle_min";
+wedges_max,seconds,wedges_skewness,wedges_total,edges_without_wedges,edges_holding_half,\
+min_angle_max,min_angle_mean,min_angle_min";
 
     /// The row of `model` (a name) measured in `backend`.
     pub fn new(model: &str, backend: Backend, shape: &ModelShape, counts: &WedgeCounts) -> Self {
@@ -124,6 +126,7 @@ min_angle_mean,min_angle_min";
             wedges_skewness: counts.per_edge.skewness,
             wedges_total: counts.total,
             edges_without_wedges: counts.edges_without_wedges,
+            edges_holding_half: counts.edges_holding_half,
             min_angle_max: shape.min_angle.max,
             min_angle_mean: shape.min_angle.mean,
             min_angle_min: shape.min_angle.min,
@@ -134,7 +137,7 @@ min_angle_mean,min_angle_min";
     /// Rust's shortest round-trip form.
     pub fn csv_record(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             csv_field(&self.model),
             self.backend.name(),
             self.source,
@@ -147,6 +150,7 @@ min_angle_mean,min_angle_min";
             self.wedges_skewness,
             self.wedges_total,
             self.edges_without_wedges,
+            self.edges_holding_half,
             self.min_angle_max,
             self.min_angle_mean,
             self.min_angle_min,

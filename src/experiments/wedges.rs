@@ -22,6 +22,9 @@ pub struct WedgeCounts {
     pub total: usize,
     /// Edges with w(e) = 0.
     pub edges_without_wedges: usize,
+    /// The smallest fraction of the edges that holds half of all wedges (Observation 1
+    /// [LZT §6]: wedges crowd on few edges when this is small); 0 without wedges.
+    pub edges_holding_half: f64,
     /// Wall-clock seconds of the propagation (`Stats::propagation_seconds`).
     pub seconds: f64,
 }
@@ -58,8 +61,40 @@ pub fn count_wedges<S: Scalar>(
         per_edge: Summary::of(&samples).expect("a TriMesh has at least one face, so edges"),
         total: counts.iter().sum(),
         edges_without_wedges: counts.iter().filter(|&&c| c == 0).count(),
+        edges_holding_half: share_holding_half(&counts),
         seconds: field.stats().propagation_seconds,
     })
+}
+
+/// The smallest fraction of `counts` (wedges per edge) whose sum is at least half the total:
+/// the fullest edges first. 0 when there is no wedge.
+///
+/// # Example
+/// ```
+/// use exact_geodesics::experiments::share_holding_half;
+/// // One edge of six holds 5 of the 10 wedges.
+/// assert_eq!(share_holding_half(&[1, 5, 1, 1, 1, 1]), 1.0 / 6.0);
+/// // Evenly spread: half the edges hold half the wedges.
+/// assert_eq!(share_holding_half(&[2, 2, 2, 2]), 0.5);
+/// assert_eq!(share_holding_half(&[0, 0]), 0.0);
+/// ```
+pub fn share_holding_half(counts: &[usize]) -> f64 {
+    let total: usize = counts.iter().sum();
+    if total == 0 {
+        return 0.0;
+    }
+    let mut fullest = counts.to_vec();
+    fullest.sort_unstable_by(|a, b| b.cmp(a));
+    let mut held = 0;
+    let edges = fullest
+        .iter()
+        .take_while(|&&c| {
+            let before = held;
+            held += c;
+            2 * before < total
+        })
+        .count();
+    edges as f64 / counts.len() as f64
 }
 
 /// [`count_wedges`] in the backend named at run time. The exact backend uses the precision cap
