@@ -2,9 +2,10 @@
 //! extreme scales and mixed magnitudes (see [`DegenerateKind`](super::DegenerateKind)).
 
 use super::draw::{bumpy_grid, chance, dyadic, grid_corners, index, int};
-use super::measure::{distance_f64, power_of_two};
+use super::measure::distance_f64;
 use super::soup::Soup;
 use crate::mesh::shapes::SplitMix64;
+use crate::mesh::vector::power_of_two;
 
 /// A random interior manifold vertex and its star size, if one is found in a few tries.
 fn interior_vertex(rng: &mut SplitMix64, soup: &Soup) -> Option<(u32, usize)> {

@@ -6,21 +6,11 @@
 //! Lengths are scaled by a power of two before squaring, so they are exact in the exact backend
 //! and correctly rounded up to a few ulps in `f64`.
 
+use crate::mesh::vector::normalizing_power;
 use crate::mesh::{TriMesh, VertexId};
 use crate::scalar::Scalar;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
-
-/// `2^k`, exactly, for `-1022 <= k <= 1023` (clamped to that range).
-pub(crate) fn power_of_two(k: i32) -> f64 {
-    let k = k.clamp(-1022, 1023);
-    f64::from_bits(((k + 1023) as u64) << 52)
-}
-
-/// The binary exponent of a finite non-zero `x`: `2^e <= |x| < 2^(e + 1)` (at least -1022).
-fn exponent(x: f64) -> i32 {
-    (((x.to_bits() >> 52) & 0x7ff) as i32 - 1023).max(-1022)
-}
 
 /// The length of `q - p` in `f64`, without overflow or underflow.
 pub(crate) fn distance_f64(p: [f64; 3], q: [f64; 3]) -> f64 {
@@ -34,8 +24,8 @@ pub(crate) fn distance_in<S: Scalar>(p: [f64; 3], q: [f64; 3]) -> S {
     if largest == 0.0 {
         return S::zero();
     }
-    let e = exponent(largest);
-    let down = S::from_f64(power_of_two(-e));
+    let power = normalizing_power(largest);
+    let down = S::from_f64(power);
     let squares = (0..3)
         .map(|i| {
             let d = (S::from_f64(q[i]) - S::from_f64(p[i])) * &down;
@@ -43,7 +33,7 @@ pub(crate) fn distance_in<S: Scalar>(p: [f64; 3], q: [f64; 3]) -> S {
         })
         .reduce(|sum, x| sum + x)
         .expect("three coordinates");
-    squares.sqrt() * S::from_f64(power_of_two(e))
+    squares.sqrt() * S::from_f64(power.recip())
 }
 
 /// A distance on the heap, smallest first.
@@ -124,14 +114,8 @@ impl EdgePaths {
 mod tests {
     use super::*;
     use crate::mesh::shapes;
+    use crate::mesh::vector::power_of_two;
     use crate::scalar::{Real, Ring, Sign};
-
-    #[test]
-    fn power_of_two_is_exact_at_both_ends_of_the_range() {
-        assert_eq!(power_of_two(600), 2f64.powi(600));
-        assert_eq!(power_of_two(-600), 2f64.powi(-600));
-        assert_eq!(power_of_two(0), 1.0);
-    }
 
     #[test]
     fn distances_at_2_to_600_neither_overflow_nor_underflow() {

@@ -25,8 +25,13 @@ pub(crate) fn normalizing_power(m: f64) -> f64 {
         (m, 0)
     };
     let exponent = ((m.to_bits() >> 52) & 0x7ff) as i32 - 1023 - shift;
-    let power = (-exponent).clamp(-1022, 1022);
-    f64::from_bits(((power + 1023) as u64) << 52)
+    power_of_two((-exponent).clamp(-1022, 1022))
+}
+
+/// `2^k`, exactly, for `-1022 <= k <= 1023` (clamped to that range).
+pub(crate) fn power_of_two(k: i32) -> f64 {
+    let k = k.clamp(-1022, 1023);
+    f64::from_bits(((k + 1023) as u64) << 52)
 }
 
 pub(crate) const TWO_TO_64: f64 = 18446744073709551616.0;
@@ -73,5 +78,28 @@ pub(crate) fn angle(u: [f64; 3], w: [f64; 3]) -> f64 {
     match (unit(u), unit(w)) {
         (Some(u), Some(w)) => length(cross(u, w)).atan2(dot(u, w)),
         _ => 0.0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn power_of_two_is_exact_at_both_ends_of_the_range() {
+        assert_eq!(power_of_two(600), 2f64.powi(600));
+        assert_eq!(power_of_two(-600), 2f64.powi(-600));
+        assert_eq!(power_of_two(0), 1.0);
+    }
+
+    #[test]
+    fn normalizing_power_brings_magnitudes_into_one_to_two_within_its_clamp() {
+        for m in [3.0, 0.75, 1e-300, 1e300] {
+            let scaled = m * normalizing_power(m);
+            assert!((1.0..2.0).contains(&scaled), "{m}: {scaled}");
+        }
+        // Beyond 2^+-1022 the power stays a normal number.
+        assert_eq!(normalizing_power(5e-320), power_of_two(1022));
+        assert_eq!(normalizing_power(f64::MAX), power_of_two(-1022));
     }
 }

@@ -386,28 +386,15 @@ mod tests {
     use super::*;
     use crate::scalar::{Adaptive, Real, Ring};
 
-    /// A unit square split along the edge from (0, 0) to (1, 1); the face below that edge has
-    /// its apex at (1, 0).
-    fn square() -> TriMesh {
-        TriMesh::new(
-            vec![
-                [0.0, 0.0, 0.0],
-                [1.0, 0.0, 0.0],
-                [1.0, 1.0, 0.0],
-                [0.0, 1.0, 0.0],
-            ],
-            vec![[0, 1, 2], [0, 2, 3]],
-        )
-        .expect("a square")
-    }
-
     /// Rays from a pseudo-source straight above the apex's shadow pass it on the side of the
     /// point of the edge they go through, and through it exactly at the shadow.
     fn rays_pass_the_apex_on_their_side<S: Scalar>() {
-        let mesh = square();
+        // A unit square split along its diagonal from v0 = (0, 0) to v3 = (1, 1); the face
+        // below the diagonal has its apex at v1 = (1, 0).
+        let mesh = crate::mesh::shapes::grid(1, 1, 1.0, 1.0);
         let unfolding = Unfolding::<S>::new(&mesh);
         let e = mesh
-            .edge_between(VertexId(0), VertexId(2))
+            .edge_between(VertexId(0), VertexId(3))
             .expect("the diagonal");
         let side = (0..2)
             .find(|&s| mesh.wing(e, s).is_some_and(|w| w.apex == VertexId(1)))
