@@ -420,7 +420,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 continue;
             };
             let at = Planar { x, y };
-            if self.unfolding.is_inside(g, &at) {
+            // Only a degenerate face has a corner on its opposite edge's line.
+            if mesh.is_degenerate_face(f) && self.unfolding.is_inside(g, &at) {
                 beyond.extend(mesh.edge(g).faces[1 - side]);
             }
             self.add_wedge(g, at, Side::from_index(side), sigma.clone(), source, k);

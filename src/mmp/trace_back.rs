@@ -497,6 +497,23 @@ impl<S: Scalar> GeodesicField<'_, S> {
         if own.contains(&face) {
             return Some(Vec::new());
         }
+        // Only an edge of a degenerate face can hold another face's vertex inside it.
+        let beside_degenerate = |g: EdgeId| {
+            self.mesh
+                .edge(g)
+                .faces
+                .into_iter()
+                .flatten()
+                .any(|h| self.mesh.is_degenerate_face(h))
+        };
+        if !self
+            .mesh
+            .face_edges(face)
+            .into_iter()
+            .any(beside_degenerate)
+        {
+            return None;
+        }
         let p = self.unfolding.position(self.mesh, &point);
         // Breadth first over faces joined by edges that contain the point inside.
         let mut reached: Vec<(FaceId, Option<(usize, SurfacePoint)>)> = vec![(face, None)];
@@ -514,6 +531,9 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 return Some(points);
             }
             for g in self.mesh.face_edges(f) {
+                if !beside_degenerate(g) {
+                    continue;
+                }
                 let Some(on) = self.unfolding.planar(self.mesh, g, &p) else {
                     continue;
                 };
