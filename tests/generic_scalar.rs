@@ -64,6 +64,14 @@ impl Field for CloneOnly {
 }
 
 impl Scalar for CloneOnly {
+    // Keeps its values, as an exact type does: the engine's kept-value paths run on `f64`.
+    type Kept = Option<CloneOnly>;
+    fn keep(make: impl FnOnce() -> Self) -> Self::Kept {
+        Some(make())
+    }
+    fn kept(kept: &Self::Kept) -> Option<Self> {
+        kept.clone()
+    }
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign {
         f64::orientation([&p[0].0, &p[1].0], [&q[0].0, &q[1].0], [&r[0].0, &r[1].0])
     }

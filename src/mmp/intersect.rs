@@ -7,7 +7,7 @@
 //! non-overlapping wedges (Property 2), splitting an existing wedge in two where the new one
 //! wins only in its middle (Fig. 8c, Fig. 10).
 
-use super::propagate::{Engine, Slot, SlotState};
+use super::propagate::{EndValues, Engine, Slot, SlotState};
 use super::stats::{Eq2Counts, Eq2Decision};
 use super::wedge::Wedge;
 use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Scalar, Site, SourceDistance};
@@ -218,7 +218,7 @@ pub fn intersect<S: Scalar>(
 
 impl<S: Scalar> Engine<'_, S> {
     /// Inserts a wedge on its edge, intersecting it with the wedges there.
-    pub(crate) fn insert(&mut self, w: Wedge<S>) {
+    pub(crate) fn insert(&mut self, w: Wedge<S>, at_ends: EndValues<S>) {
         let e = w.edge;
         S::locate(Site {
             edge: Some(e.0),
@@ -247,7 +247,7 @@ impl<S: Scalar> Engine<'_, S> {
             .map(|&id| (id, &self.slots[id as usize].wedge));
         cut_into_pieces(&mut self.stats.eq2, log, &mut pieces, overlapping, &w);
         if pieces.iter().any(|p| p.owner == Owner::New) {
-            self.rebuild(&w, first, end, &mut pieces, &length);
+            self.rebuild(&w, &at_ends, first, end, &mut pieces, &length);
         }
         self.scratch.pieces = pieces;
     }
@@ -256,6 +256,7 @@ impl<S: Scalar> Engine<'_, S> {
     fn rebuild(
         &mut self,
         w: &Wedge<S>,
+        at_ends: &EndValues<S>,
         first: usize,
         end: usize,
         pieces: &mut Vec<Piece<S>>,
@@ -276,15 +277,17 @@ impl<S: Scalar> Engine<'_, S> {
             match piece.owner {
                 Owner::New => {
                     if S::within(&zero, &piece.lo, &piece.hi, length) {
-                        self.improve_vertex(v0, mine.at(&zero), w.source);
+                        let d = S::kept(&at_ends[0]).unwrap_or_else(|| mine.at(&zero));
+                        self.improve_vertex(v0, d, w.source);
                     }
                     if S::within(length, &piece.lo, &piece.hi, length) {
-                        self.improve_vertex(v1, mine.at(length), w.source);
+                        let d = S::kept(&at_ends[1]).unwrap_or_else(|| mine.at(length));
+                        self.improve_vertex(v1, d, w.source);
                     }
                     let mut wedge = w.clone();
                     wedge.b0 = piece.lo;
                     wedge.b1 = piece.hi;
-                    let id = self.allocate(wedge, SlotState::Queued);
+                    let id = self.allocate(wedge, at_ends.clone(), SlotState::Queued);
                     self.push_wedge_event(id);
                     ids.push(id);
                 }
@@ -297,7 +300,8 @@ impl<S: Scalar> Engine<'_, S> {
                         let mut wedge = slot.wedge.clone();
                         wedge.b0 = piece.lo;
                         wedge.b1 = piece.hi;
-                        self.allocate(wedge, state)
+                        let kept = slot.at_ends.clone();
+                        self.allocate(wedge, kept, state)
                     } else {
                         reused.push(id);
                         if !unchanged {
@@ -335,17 +339,19 @@ impl<S: Scalar> Engine<'_, S> {
         self.scratch.ids = ids;
     }
 
-    fn allocate(&mut self, wedge: Wedge<S>, state: SlotState) -> u32 {
+    fn allocate(&mut self, wedge: Wedge<S>, at_ends: EndValues<S>, state: SlotState) -> u32 {
         self.stats.wedges_created += 1;
         if let Some(id) = self.free.pop() {
             let slot = &mut self.slots[id as usize];
             slot.wedge = wedge;
+            slot.at_ends = at_ends;
             slot.state = state;
             slot.generation = slot.generation.wrapping_add(1);
             id
         } else {
             self.slots.push(Slot {
                 wedge,
+                at_ends,
                 state,
                 generation: 0,
             });

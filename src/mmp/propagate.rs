@@ -99,8 +99,15 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     Ok(engine.finish(sources))
 }
 
-/// A wedge about to be born on an edge: the edge, its range, its pseudo-source there.
-type Child<S> = (EdgeId, S, S, Planar<S>);
+/// A wedge about to be born on an edge: the edge, its range, its pseudo-source there, and its
+/// distances at the edge's ends.
+type Child<S> = (EdgeId, S, S, Planar<S>, EndValues<S>);
+
+/// A wedge's distance function at its edge's `vertices[0]` and `vertices[1]`, kept by number
+/// types that keep values ([`Scalar::Kept`]): every wedge born of one construction across a
+/// face, and all their descendants that keep a vertex of it as an end of their edge, give that
+/// vertex the very same value, so an exact backend sees their ties by structure.
+pub(crate) type EndValues<S> = [<S as Scalar>::Kept; 2];
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum SlotState {
@@ -110,8 +117,9 @@ pub(crate) enum SlotState {
 }
 
 #[derive(Clone, Debug)]
-pub(crate) struct Slot<S> {
+pub(crate) struct Slot<S: Scalar> {
     pub(crate) wedge: Wedge<S>,
+    pub(crate) at_ends: EndValues<S>,
     pub(crate) state: SlotState,
     pub(crate) generation: u32,
 }
@@ -220,9 +228,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
                             continue;
                         }
                         s.state = SlotState::Propagated;
-                        let wedge = s.wedge.clone();
+                        let (wedge, at_ends) = (s.wedge.clone(), s.at_ends.clone());
                         self.stats.wedges_propagated += 1;
-                        self.propagate_wedge(&wedge);
+                        self.propagate_wedge(&wedge, &at_ends);
                     }
                 }
                 EventKind::Vertex(v) => {
@@ -463,13 +471,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
             pseudo_source: source,
             source: k,
         };
-        self.insert(wedge);
+        let d = wedge.distance_function();
+        let at_ends = [S::keep(|| d.at(&wedge.b0)), S::keep(|| d.at(&wedge.b1))];
+        self.insert(wedge, at_ends);
     }
 
     /// Propagates a wedge across the face on the far side of its edge [SSK+05 §4.1, LZT Fig. 2c]:
     /// the rays from the pseudo-source through `b0` and `b1` cut the face's two other edges, and
     /// the pieces between them become new wedges with the same pseudo-source.
-    fn propagate_wedge(&mut self, w: &Wedge<S>) {
+    fn propagate_wedge(&mut self, w: &Wedge<S>, at_ends: &EndValues<S>) {
         S::locate(Site {
             edge: Some(w.edge.0),
             what: "propagation across a face",
@@ -490,23 +500,43 @@ impl<'m, S: Scalar> Engine<'m, S> {
         // never read off a constructed shadow. Whether the apex itself is reached is asked at
         // the backend's resolution, as for any point of a range.
         let (side0, side1) = (layout.ray_side(&s, &w.b0), layout.ray_side(&s, &w.b1));
-        let apex = S::within(&layout.apex_shadow(&s), &w.b0, &w.b1, length)
-            .then(|| (layout.apex_vertex(), layout.apex_distance(&s) + &w.sigma));
+        let apex_distance = || layout.apex_distance(&s) + &w.sigma;
+        let at_apex = S::keep(apex_distance);
+        let apex = S::within(&layout.apex_shadow(&s), &w.b0, &w.b1, length).then(|| {
+            let d = S::kept(&at_apex).unwrap_or_else(apex_distance);
+            (layout.apex_vertex(), d)
+        });
         let zero = S::zero();
         let one = S::from_f64(1.0);
         let clamp = |t: S| S::max_of(&zero, &S::min_of(&one, &t));
+        // A range end at an end of the edge is that vertex, which lies on the near edge at
+        // t = 0 (v0) or on the far edge at u = 1 (v1): exactly there, not at a constructed
+        // quotient equal to it that an exact backend would have to prove equal.
+        let (at_v0, at_v1) = (
+            w.b0.sign() == Sign::Zero,
+            w.b1.compare(length) == Ordering::Equal,
+        );
         let mut children: [Option<Child<S>>; 2] = [None, None];
         // An edge of length zero (coincident corners) carries no wedge; its face passes rays
         // on to its other edge unchanged.
         if side0 == Ordering::Less && !self.unfolding.is_zero_length(layout.wing.near) {
-            let t0 = clamp(layout.near_hit(&s, &w.b0));
+            let t0 = if at_v0 {
+                zero.clone()
+            } else {
+                clamp(layout.near_hit(&s, &w.b0))
+            };
             let t1 = if side1 == Ordering::Less {
                 clamp(layout.near_hit(&s, &w.b1))
             } else {
                 one.clone()
             };
             let (p0, p1) = (layout.near_position(&t0), layout.near_position(&t1));
-            children[0] = Some((layout.wing.near, p0, p1, layout.to_near(&s)));
+            let ends = if layout.near_reversed {
+                [at_apex.clone(), at_ends[0].clone()]
+            } else {
+                [at_ends[0].clone(), at_apex.clone()]
+            };
+            children[0] = Some((layout.wing.near, p0, p1, layout.to_near(&s), ends));
         }
         if side1 == Ordering::Greater && !self.unfolding.is_zero_length(layout.wing.far) {
             let u0 = if side0 == Ordering::Greater {
@@ -514,14 +544,23 @@ impl<'m, S: Scalar> Engine<'m, S> {
             } else {
                 zero.clone()
             };
-            let u1 = clamp(layout.far_hit(&s, &w.b1));
+            let u1 = if at_v1 {
+                one.clone()
+            } else {
+                clamp(layout.far_hit(&s, &w.b1))
+            };
             let (p0, p1) = (layout.far_position(&u0), layout.far_position(&u1));
-            children[1] = Some((layout.wing.far, p0, p1, layout.to_far(&s)));
+            let ends = if layout.far_reversed {
+                [at_ends[1].clone(), at_apex.clone()]
+            } else {
+                [at_apex.clone(), at_ends[1].clone()]
+            };
+            children[1] = Some((layout.wing.far, p0, p1, layout.to_far(&s), ends));
         }
         if let Some((v, d)) = apex {
             self.improve_vertex(v, d, w.source);
         }
-        for (g, p0, p1, at) in children.into_iter().flatten() {
+        for (g, p0, p1, at, ends) in children.into_iter().flatten() {
             let (b0, b1) = if p0.compare(&p1) == Ordering::Greater {
                 (p1, p0)
             } else {
@@ -542,7 +581,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             if self.is_dominated_by_vertices(&child) {
                 self.stats.wedges_filtered += 1;
             } else {
-                self.insert(child);
+                self.insert(child, ends);
             }
         }
     }

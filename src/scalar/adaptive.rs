@@ -188,6 +188,16 @@ fn cmp(a: f64, b: f64) -> Ordering {
 }
 
 impl Scalar for Adaptive {
+    type Kept = ();
+
+    #[inline(always)]
+    fn keep(_make: impl FnOnce() -> Self) -> Self::Kept {}
+
+    #[inline(always)]
+    fn kept(_kept: &Self::Kept) -> Option<Self> {
+        None
+    }
+
     #[inline(always)]
     fn sign(&self) -> Sign {
         sign_of(self.0)

@@ -59,6 +59,9 @@ pub struct DecisionCounts {
     /// Values proved to be exactly zero by the exact stage (a separation bound or a symbolic
     /// identity); a zero the filter sees as the point interval `[0, 0]` counts as filtered.
     pub certified_zeros: u64,
+    /// Of those, proved by structure: the difference of two copies of one expression, or a
+    /// product with zero.
+    pub zeros_by_structure: u64,
     /// Of those, proved by exact rational evaluation (no square root below them).
     pub zeros_by_rational_value: u64,
     /// Of those, proved by a zero normal form in a tower of quadratic extensions.
@@ -92,6 +95,9 @@ pub enum Certificate {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ZeroProof {
+    /// The value is `x - x` for two copies of one expression `x` (or a product with zero):
+    /// an identity the algorithm built, proved without evaluating it.
+    Structure,
     /// Exact rational evaluation: no square root occurs in the value.
     RationalValue,
     /// The value's normal form in a tower of quadratic extensions is zero.
@@ -128,6 +134,7 @@ pub(crate) fn record(settled: Certificate, enclosure: impl FnOnce() -> [f64; 2])
             Certificate::CertifiedZero(proof) => {
                 c.certified_zeros += 1;
                 match proof {
+                    ZeroProof::Structure => c.zeros_by_structure += 1,
                     ZeroProof::RationalValue => c.zeros_by_rational_value += 1,
                     ZeroProof::NormalForm => c.zeros_by_normal_form += 1,
                     ZeroProof::SeparationBound => c.zeros_by_separation_bound += 1,

@@ -51,6 +51,16 @@ impl Field for f64 {
 }
 
 impl Scalar for f64 {
+    type Kept = ();
+
+    #[inline(always)]
+    fn keep(_make: impl FnOnce() -> Self) -> Self::Kept {}
+
+    #[inline(always)]
+    fn kept(_kept: &Self::Kept) -> Option<Self> {
+        None
+    }
+
     #[inline(always)]
     fn orientation(p: [&f64; 2], q: [&f64; 2], r: [&f64; 2]) -> Sign {
         ((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])).sign()

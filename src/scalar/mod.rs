@@ -136,6 +136,20 @@ pub trait Field: Ring {
 /// hooks ([`Scalar::locate`], [`Scalar::take_counts`]) default to nothing, which is what a
 /// backend that does not certify wants (the `f64` engine pays nothing for them).
 pub trait Scalar: Field {
+    /// A value the engine keeps so that it can use the very same value again where it meets
+    /// the same quantity a second time: `()` for number types whose values are numbers, the
+    /// value itself for expression types, whose identities the engine's constructions then
+    /// show by structure (a wedge's distance at a vertex, derived again by a descendant of the
+    /// wedge that lit the vertex, is one and the same expression).
+    type Kept: Clone + Default + std::fmt::Debug;
+
+    /// Keeps the value `make` builds, if this number type keeps values (`make` is not called
+    /// otherwise).
+    fn keep(make: impl FnOnce() -> Self) -> Self::Kept;
+
+    /// The kept value, if this number type keeps values.
+    fn kept(kept: &Self::Kept) -> Option<Self>;
+
     /// The sign of `self`.
     fn sign(&self) -> Sign;
 

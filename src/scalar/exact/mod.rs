@@ -6,8 +6,10 @@
 //! 1. the `f64` interval computed when the node was built (the filter);
 //! 2. without square roots below it, exact rational evaluation; with them, MPFR intervals at
 //!    doubling precision until the enclosure excludes zero;
-//! 3. a zero is certified when the enclosure is smaller than the BFMSS separation bound
-//!    \[BFMSS01\] (a non-zero value cannot be that small), or when the DAG is zero by structure;
+//! 3. a zero is certified by structure (`x - x` of two copies of one expression), by exact
+//!    rational evaluation, by a zero normal form in a tower of quadratic extensions, or when
+//!    the enclosure is smaller than the BFMSS separation bound \[BFMSS01\] (a non-zero value
+//!    cannot be that small);
 //! 4. a decision that reaches the precision cap ([`set_precision_cap`]) without either is
 //!    *uncertified*: the value is then within `2^-cap` of zero, it is treated as zero (a tie),
 //!    and it is recorded with its place, never passed off as exact.
@@ -117,6 +119,9 @@ impl Real {
         let node = &self.0;
         if let Err(cause) = check_divisors(node) {
             return (Sign::Zero, Certificate::Uncertified(cause));
+        }
+        if node.structural_zero {
+            return (Sign::Zero, Certificate::CertifiedZero(ZeroProof::Structure));
         }
         if let Some(s) = node.filter.sign() {
             return (s, Certificate::Filter);
@@ -345,6 +350,16 @@ impl CertifiedSign for Real {
 }
 
 impl Scalar for Real {
+    type Kept = Option<Real>;
+
+    fn keep(make: impl FnOnce() -> Self) -> Self::Kept {
+        Some(make())
+    }
+
+    fn kept(kept: &Self::Kept) -> Option<Self> {
+        kept.clone()
+    }
+
     fn sign(&self) -> Sign {
         self.decide()
     }
@@ -502,11 +517,38 @@ mod tests {
     #[test]
     fn rewriting_keeps_its_zeros_once_the_divisors_are_non_zero() {
         let huge = int(1) / tiny();
-        let zero = (Sign::Zero, Certificate::Filter);
+        let zero = (Sign::Zero, Certificate::CertifiedZero(ZeroProof::Structure));
         assert_eq!((huge.clone() - huge.clone()).certified_sign(), zero);
         assert_eq!((int(0) * huge.clone()).certified_sign(), zero);
         assert_eq!(huge.compare(&huge), Ordering::Equal);
         assert_eq!(Real::take_counts().uncertified, 0);
+    }
+
+    /// `sqrt(2) * sqrt(3) + 1/3`, built anew on each call.
+    fn copy_of_an_expression() -> Real {
+        int(2).sqrt() * &int(3).sqrt() + &(int(1) / int(3))
+    }
+
+    #[test]
+    fn two_copies_of_one_expression_differ_by_a_structural_zero() {
+        let (a, b) = (copy_of_an_expression(), copy_of_an_expression());
+        assert!(!Arc::ptr_eq(&a.0, &b.0));
+        assert_eq!(
+            (a.clone() - b.clone()).certified_sign(),
+            (Sign::Zero, Certificate::CertifiedZero(ZeroProof::Structure))
+        );
+        // A different expression of the same value is no copy: another proof settles it.
+        let other = int(3).sqrt() * &int(2).sqrt() + &(int(1) / int(3));
+        assert_eq!(
+            (a - other).certified_sign(),
+            (
+                Sign::Zero,
+                Certificate::CertifiedZero(ZeroProof::NormalForm)
+            )
+        );
+        // Nor is an expression that differs in one leaf, however close.
+        let near = int(2).sqrt() * &int(3).sqrt() + &(Real::from_f64(1.0 / 3.0));
+        assert_eq!((b - near).certified_sign().1, Certificate::Refinement);
     }
 
     #[test]

@@ -5,7 +5,10 @@
 //! - the BFMSS quantities `log2 u(E)` and `log2 l(E)` of its separation bound \[BFMSS01\];
 //! - whether a square root occurs below it (if not, it can be evaluated as a rational);
 //! - whether a division below it has a divisor that the filter does not show non-zero (such
-//!   divisors are decided before any sign of the node is, see [`Node::divisors_unchecked`]).
+//!   divisors are decided before any sign of the node is, see [`Node::divisors_unchecked`]);
+//! - a hash of its expression, so that `a - b` of two copies of one expression (the engine
+//!   builds the same construction from the same inputs more than once) is known to be zero by
+//!   structure ([`same_expression`]).
 //!
 //! Operations on two rational leaves fold into a rational leaf (while it stays small), and the
 //! square root of a perfect-square rational is rational, so meshes with rational lengths build
@@ -14,6 +17,8 @@
 use super::super::{Interval, Sign};
 use super::normal_form::NormalForm;
 use rug::{Integer, Rational};
+use std::collections::HashSet;
+use std::hash::{Hash, Hasher};
 use std::sync::{Arc, Mutex, OnceLock};
 
 /// Rational leaves larger than this (numerator plus denominator bits) are not folded further:
@@ -59,6 +64,11 @@ pub(crate) struct Node {
     pub(crate) divisors_checked: OnceLock<DivisorCheck>,
     pub(crate) cache: Mutex<Option<Enclosure>>,
     pub(crate) normal_form: OnceLock<Option<NormalForm>>,
+    /// A hash of the expression: equal for equal expressions, whichever nodes hold them.
+    hash: u64,
+    /// Whether the node is zero by its structure (`x - x` or `0 * x` of an expression `x`),
+    /// once its divisors are non-zero.
+    pub(crate) structural_zero: bool,
 }
 
 /// The outcome of checking a node's divisors (see [`Node::divisors_unchecked`]).
@@ -114,7 +124,11 @@ fn enclose(r: &Rational) -> Interval {
 
 impl Node {
     pub(crate) fn leaf(r: Rational) -> Arc<Node> {
+        let mut hasher = std::hash::DefaultHasher::new();
+        r.hash(&mut hasher);
         Arc::new(Node {
+            hash: hasher.finish(),
+            structural_zero: false,
             filter: enclose(&r),
             log_u: log2_bound(r.numer()),
             log_l: log2_bound(r.denom()),
@@ -147,6 +161,8 @@ impl Node {
             }
         };
         Arc::new(Node {
+            hash: op_hash(&op),
+            structural_zero: false,
             op,
             filter,
             log_u,
@@ -160,15 +176,25 @@ impl Node {
     }
 
     /// `x - x` or `0 * x`: zero wherever `x` has a value. Without divisors to check that is the
-    /// rational zero; otherwise the operation is kept, for its divisors to be checked before
-    /// its sign is given, but its filter is the point zero, so that the sign is certified zero
-    /// once they are shown non-zero (a zero times a division by zero stays undefined).
+    /// rational zero (marked as a zero by structure when `x` is an expression); otherwise the
+    /// operation is kept, for its divisors to be checked before its sign is given, but its
+    /// filter is the point zero, so that the sign is certified zero once they are shown
+    /// non-zero (a zero times a division by zero stays undefined).
     fn zero_of(op: Op) -> Arc<Node> {
         if !op_children(&op).any(|c| c.divisors_unchecked) {
-            return Node::leaf(Rational::new());
+            let zero = Node::leaf(Rational::new());
+            if op_children(&op).all(|c| c.rational().is_some()) {
+                return zero;
+            }
+            let mut zero = Arc::into_inner(zero).expect("a new node");
+            zero.structural_zero = true;
+            return Arc::new(zero);
         }
         let has_sqrt = op_children(&op).any(|c| c.has_sqrt);
-        Node::build(op, Interval::point(0.0), f64::NEG_INFINITY, 0.0, has_sqrt)
+        let zero = Node::build(op, Interval::point(0.0), f64::NEG_INFINITY, 0.0, has_sqrt);
+        let mut zero = Arc::into_inner(zero).expect("a new node");
+        zero.structural_zero = true;
+        Arc::new(zero)
     }
 
     /// Folds a binary operation of two small rational leaves.
@@ -187,6 +213,10 @@ impl Node {
 
     fn is_zero(&self) -> bool {
         self.rational().is_some_and(|r| r.is_zero())
+    }
+
+    fn is_one(&self) -> bool {
+        self.rational().is_some_and(|r| *r == 1)
     }
 
     pub(crate) fn add(a: Arc<Node>, b: Arc<Node>) -> Arc<Node> {
@@ -211,7 +241,7 @@ impl Node {
         if let Some(n) = Node::fold(&a, &b, |x, y| Some(Rational::from(x - y))) {
             return n;
         }
-        if Arc::ptr_eq(&a, &b) {
+        if same_expression(&a, &b) {
             return Node::zero_of(Op::Sub(a, b));
         }
         if b.is_zero() {
@@ -232,6 +262,14 @@ impl Node {
         if a.is_zero() || b.is_zero() {
             return Node::zero_of(Op::Mul(a, b));
         }
+        // The same node, not a copy of it: identities the engine builds (an edge's length
+        // reached as one times it) stay visible to `x - x`.
+        if a.is_one() {
+            return b;
+        }
+        if b.is_one() {
+            return a;
+        }
         let (log_u, log_l) = (a.log_u + b.log_u, a.log_l + b.log_l);
         let (filter, has_sqrt) = (a.filter * b.filter, a.has_sqrt || b.has_sqrt);
         Node::build(Op::Mul(a, b), filter, log_u, log_l, has_sqrt)
@@ -241,6 +279,9 @@ impl Node {
         let quotient = |x: &Rational, y: &Rational| (!y.is_zero()).then(|| Rational::from(x / y));
         if let Some(n) = Node::fold(&a, &b, quotient) {
             return n;
+        }
+        if b.is_one() {
+            return a;
         }
         let (log_u, log_l) = (a.log_u + b.log_l, a.log_l + b.log_u);
         let (filter, has_sqrt) = (a.filter / b.filter, a.has_sqrt || b.has_sqrt);
@@ -276,6 +317,64 @@ impl Node {
     pub(crate) fn children(&self) -> impl Iterator<Item = &Arc<Node>> {
         op_children(&self.op)
     }
+}
+
+/// The hash of an operation's expression, from its kind and its operands' hashes.
+fn op_hash(op: &Op) -> u64 {
+    let tag: u64 = match op {
+        Op::Leaf(_) => 1,
+        Op::Add(..) => 2,
+        Op::Sub(..) => 3,
+        Op::Mul(..) => 4,
+        Op::Div(..) => 5,
+        Op::Neg(_) => 6,
+        Op::Sqrt(_) => 7,
+        Op::Dropped => 8,
+    };
+    op_children(op).fold(tag, |h, c| {
+        (h.rotate_left(23) ^ c.hash).wrapping_mul(0x9E37_79B9_7F4A_7C15)
+    })
+}
+
+/// Node pairs [`same_expression`] may compare before it gives up (and answers `false`): two
+/// copies of a long construction are compared in time linear in their size, but no more.
+const SAME_EXPRESSION_BUDGET: usize = 4096;
+
+/// Whether two nodes hold the same expression: the same node, or the same operation on
+/// operands that hold the same expressions, down to equal rational leaves. `false` may also
+/// mean "too large to tell"; `true` is a proof that the values are equal.
+pub(crate) fn same_expression(a: &Arc<Node>, b: &Arc<Node>) -> bool {
+    if Arc::ptr_eq(a, b) {
+        return true;
+    }
+    if a.hash != b.hash {
+        return false;
+    }
+    let mut seen = HashSet::new();
+    let mut stack = vec![(a, b)];
+    while let Some((x, y)) = stack.pop() {
+        if Arc::ptr_eq(x, y) || !seen.insert((Arc::as_ptr(x), Arc::as_ptr(y))) {
+            continue;
+        }
+        if x.hash != y.hash || seen.len() > SAME_EXPRESSION_BUDGET {
+            return false;
+        }
+        let same_kind = match (&x.op, &y.op) {
+            (Op::Leaf(p), Op::Leaf(q)) => p == q,
+            (Op::Add(..), Op::Add(..))
+            | (Op::Sub(..), Op::Sub(..))
+            | (Op::Mul(..), Op::Mul(..))
+            | (Op::Div(..), Op::Div(..))
+            | (Op::Neg(_), Op::Neg(_))
+            | (Op::Sqrt(_), Op::Sqrt(_)) => true,
+            _ => false,
+        };
+        if !same_kind {
+            return false;
+        }
+        stack.extend(x.children().zip(y.children()));
+    }
+    true
 }
 
 /// The operands of an operation.
