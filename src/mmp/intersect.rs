@@ -73,21 +73,31 @@ fn min_on<S: Scalar>(d: &SourceDistance<S>, lo: &S, hi: &S, at_lo: &S, at_hi: &S
 /// are constructions: rounded from the coefficients of eq. (2), a near-double root moves far
 /// (1.3 units on an edge of 1e8 in a mixed-magnitude mesh), so owners are not inferred by
 /// alternation from one piece, which would hand that whole stretch to the wrong wedge.
+/// `at_vertices[0]` (`[1]`) holds both distances at `lo` (`hi`) when that end is a vertex of
+/// the edge whose distances both wedges keep ([`EndValues`]): those, not values derived again,
+/// are compared there, so that a tie the engine built is seen as one.
 /// Returns the case and whether eq. (2) was solved.
 fn split_shared_range<S: Scalar>(
     pieces: &mut Vec<Piece<S>>,
     theirs: &SourceDistance<S>,
     mine: &SourceDistance<S>,
-    lo: S,
-    hi: S,
+    [lo, hi]: [S; 2],
+    at_vertices: [Option<[S; 2]>; 2],
     id: u32,
 ) -> (Eq2Case, bool) {
     if S::same_distance_function(theirs, mine, &(hi.clone() - &lo)) {
         push_piece(pieces, lo, hi, Owner::Old(id));
         return (Eq2Case::Infinite, true);
     }
-    let (their_lo, their_hi) = (theirs.at(&lo), theirs.at(&hi));
-    let (my_lo, my_hi) = (mine.at(&lo), mine.at(&hi));
+    let ties = at_vertices.each_ref().map(|v| {
+        v.as_ref()
+            .is_some_and(|[t, m]| t.compare_distance(m) == Ordering::Equal)
+    });
+    let [[their_lo, my_lo], [their_hi, my_hi]] = [(&lo, 0), (&hi, 1)].map(|(at, i)| {
+        at_vertices[i]
+            .clone()
+            .unwrap_or_else(|| [theirs.at(at), mine.at(at)])
+    });
     let their_max = S::max_of(&their_lo, &their_hi);
     if min_on(mine, &lo, &hi, &my_lo, &my_hi).compare_distance(&their_max) != Ordering::Less {
         push_piece(pieces, lo, hi, Owner::Old(id));
@@ -98,7 +108,7 @@ fn split_shared_range<S: Scalar>(
         push_piece(pieces, lo, hi, Owner::New);
         return (Eq2Case::None, false);
     }
-    let roots = S::bisector_roots(theirs, mine, &lo, &hi);
+    let roots = S::bisector_roots_given_ties(theirs, mine, &lo, &hi, ties);
     let case = roots.case();
     let (first, second) = match roots {
         BisectorRoots::One(r) | BisectorRoots::Touch(r) => (Some(r), None),
@@ -121,17 +131,20 @@ fn split_shared_range<S: Scalar>(
 }
 
 /// Cuts the union of the new wedge's range and the ranges of the wedges it overlaps (sorted,
-/// disjoint, each with an id) into pieces, each owned by the better wedge there.
+/// disjoint, each with an id and its kept distances at the edge's ends) into pieces, each
+/// owned by the better wedge there.
 fn cut_into_pieces<'a, S: Scalar>(
     counts: &mut Eq2Counts,
     mut log: Option<&mut Vec<Eq2Decision>>,
     pieces: &mut Vec<Piece<S>>,
-    overlapping: impl Iterator<Item = (u32, &'a Wedge<S>)>,
-    w: &Wedge<S>,
+    overlapping: impl Iterator<Item = (u32, &'a Wedge<S>, &'a EndValues<S>)>,
+    (w, at_ends): (&Wedge<S>, &EndValues<S>),
+    length: &S,
 ) {
     let mine = w.distance_function();
     let mut cursor = w.b0.clone();
-    for (id, old) in overlapping {
+    let vertices = [S::zero(), length.clone()];
+    for (id, old, old_ends) in overlapping {
         if cursor.compare(&old.b0) == Ordering::Less {
             push_piece(pieces, cursor.clone(), old.b0.clone(), Owner::New);
         }
@@ -146,7 +159,13 @@ fn cut_into_pieces<'a, S: Scalar>(
             let range = [lo.to_f64(), hi.to_f64()];
             (range, [eq2.a, eq2.b, eq2.c].map(|c| c.to_f64()))
         });
-        let (case, solved) = split_shared_range(pieces, &theirs, &mine, lo, hi.clone(), id);
+        // Both distances at a shared end that is a vertex, if both wedges keep them.
+        let at_vertices = [(&lo, 0), (&hi, 1)].map(|(end, i)| {
+            let kept = [S::kept(&old_ends[i])?, S::kept(&at_ends[i])?];
+            (end.compare(&vertices[i]) == Ordering::Equal).then_some(kept)
+        });
+        let range = [lo, hi.clone()];
+        let (case, solved) = split_shared_range(pieces, &theirs, &mine, range, at_vertices, id);
         counts.count(case);
         if let (Some(log), Some((range, coefficients))) = (log.as_deref_mut(), record) {
             log.push(Eq2Decision {
@@ -191,7 +210,17 @@ pub fn intersect<S: Scalar>(
         .enumerate()
         .filter(|(_, old)| overlaps(old))
         .map(|(i, old)| (i as u32, old));
-    cut_into_pieces(&mut counts, None, &mut pieces, overlapping, arriving);
+    let none = EndValues::<S>::default();
+    let overlapping = overlapping.map(|(i, old)| (i, old, &none));
+    let new = (arriving, &none);
+    cut_into_pieces(
+        &mut counts,
+        None,
+        &mut pieces,
+        overlapping,
+        new,
+        edge_length,
+    );
     let first = existing.iter().position(overlaps).unwrap_or(existing.len());
     let mut result: Vec<Wedge<S>> = existing[..first].to_vec();
     for piece in pieces {
@@ -242,10 +271,19 @@ impl<S: Scalar> Engine<'_, S> {
         let mut pieces = std::mem::take(&mut self.scratch.pieces);
         pieces.clear();
         let log = self.record_decisions.then_some(&mut self.stats.decisions);
-        let overlapping = self.lists[e.index()][first..end]
-            .iter()
-            .map(|&id| (id, &self.slots[id as usize].wedge));
-        cut_into_pieces(&mut self.stats.eq2, log, &mut pieces, overlapping, &w);
+        let overlapping = self.lists[e.index()][first..end].iter().map(|&id| {
+            let slot = &self.slots[id as usize];
+            (id, &slot.wedge, &slot.at_ends)
+        });
+        let new = (&w, &at_ends);
+        cut_into_pieces(
+            &mut self.stats.eq2,
+            log,
+            &mut pieces,
+            overlapping,
+            new,
+            &length,
+        );
         if pieces.iter().any(|p| p.owner == Owner::New) {
             self.rebuild(&w, &at_ends, first, end, &mut pieces, &length);
         }

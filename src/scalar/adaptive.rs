@@ -264,17 +264,17 @@ impl Scalar for Adaptive {
         let crossings = filtered(
             || {
                 let (lo, hi) = (ErrorBound::from_f64(lo.0), ErrorBound::from_f64(hi.0));
-                roots::crossings(&lift(a), &lift(b), &lo, &hi, &signs)
+                roots::crossings(&lift(a), &lift(b), &lo, &hi, &signs, [false; 2])
                     .map(|c| c.map(|x| x.to_f64()))
             },
             || {
                 let (lo, hi) = (DoubleDouble::from_f64(lo.0), DoubleDouble::from_f64(hi.0));
-                roots::crossings(&lift(a), &lift(b), &lo, &hi, &signs)
+                roots::crossings(&lift(a), &lift(b), &lo, &hi, &signs, [false; 2])
                     .map(|c| c.map(|x| x.to_f64()))
             },
             || {
                 let (lo, hi) = (Q::from_f64(lo.0), Q::from_f64(hi.0));
-                roots::crossings(&lift(a), &lift(b), &lo, &hi, &signs)
+                roots::crossings(&lift(a), &lift(b), &lo, &hi, &signs, [false; 2])
                     .map(|c| c.map(|x| x.to_f64()))
             },
         );

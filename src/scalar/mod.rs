@@ -183,6 +183,20 @@ pub trait Scalar: Field {
         hi: &Self,
     ) -> BisectorRoots<Self>;
 
+    /// [`Scalar::bisector_roots`] when the engine knows that the two distance functions are
+    /// equal at `lo` (`ties[0]`) or at `hi` (`ties[1]`), where eq. (2) then has a root: a
+    /// backend that proves such equalities by structure ([`Scalar::Kept`]) uses the knowledge
+    /// rather than decide it again. The default ignores it.
+    fn bisector_roots_given_ties(
+        a: &SourceDistance<Self>,
+        b: &SourceDistance<Self>,
+        lo: &Self,
+        hi: &Self,
+        _ties: [bool; 2],
+    ) -> BisectorRoots<Self> {
+        Self::bisector_roots(a, b, lo, hi)
+    }
+
     /// The orientation of the triangle `(p, q, r)`: the sign of `(q - p) x (r - p)`, positive
     /// when `r` lies to the left of the line from `p` to `q`.
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign;

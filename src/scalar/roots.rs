@@ -198,13 +198,15 @@ impl<T: CertifiedSign> TwoRoots<'_, T> {
 /// polynomial in the inputs; `None` when `T` cannot tell one of them.
 ///
 /// `signs` decides the signs that depend on the inputs only where `T` cannot ([`InT`]: `T`
-/// decides every sign).
+/// decides every sign). `ties[0]` (`ties[1]`) says that the distance functions are known to be
+/// equal at `lo` (`hi`): eq. (2)'s `P` is zero there, and is not evaluated.
 pub(crate) fn crossings<T: CertifiedSign>(
     a: &SourceDistance<T>,
     b: &SourceDistance<T>,
     lo: &T,
     hi: &T,
     signs: &impl InputSigns,
+    ties: [bool; 2],
 ) -> Option<Crossings<T>> {
     let gap = |mirror| {
         source_gap(a, b, mirror)
@@ -241,8 +243,12 @@ pub(crate) fn crossings<T: CertifiedSign>(
     let width = hi.clone() - lo;
     // q2(u) - beta^2 = u^2 - 2 x2 u + (n2 - beta^2).
     let q2_excess = n2.clone() - &beta2;
-    // A single root, known exactly: inside the range, and a solution of eq. (1)?
+    // A single root, known exactly: inside the range, and a solution of eq. (1)? Not inside
+    // where the functions are known to tie at an end: the root is that end.
     let single = |u: T| -> Option<Crossings<T>> {
+        if ties[0] || ties[1] {
+            return Some(Crossings::None);
+        }
         let inside = u.certified_sign()? == Sign::Positive
             && (width.clone() - &u).certified_sign()? == Sign::Positive;
         if !inside {
@@ -315,7 +321,11 @@ pub(crate) fn crossings<T: CertifiedSign>(
         }
         let slope = || (two.clone() * &eq2.a * from_lo + &eq2.b).certified_sign();
         let value = eq2.a.clone() * from_lo * from_lo + &(eq2.b.clone() * from_lo) + &eq2.c;
-        let at_p = value.certified_sign().or_else(|| signs.at_end(is_hi))?;
+        let at_p = if ties[usize::from(is_hi)] {
+            Sign::Zero
+        } else {
+            value.certified_sign().or_else(|| signs.at_end(is_hi))?
+        };
         roots.root_minus_given(larger, at_p, slope)
     };
     let solves = |larger: bool| -> Option<bool> {

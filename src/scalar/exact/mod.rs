@@ -406,7 +406,17 @@ impl Scalar for Real {
         lo: &Self,
         hi: &Self,
     ) -> BisectorRoots<Self> {
-        let crossings = roots::crossings(a, b, lo, hi, &roots::InT)
+        Real::bisector_roots_given_ties(a, b, lo, hi, [false; 2])
+    }
+
+    fn bisector_roots_given_ties(
+        a: &SourceDistance<Self>,
+        b: &SourceDistance<Self>,
+        lo: &Self,
+        hi: &Self,
+        ties: [bool; 2],
+    ) -> BisectorRoots<Self> {
+        let crossings = roots::crossings(a, b, lo, hi, &roots::InT, ties)
             .expect("the exact backend decides every sign");
         roots::into_roots(crossings, lo)
     }
