@@ -56,6 +56,13 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
         &self.stats
     }
 
+    /// Whether the backend certified every decision of the propagation (always true for
+    /// backends that do not certify: they count no decision; see
+    /// [`DecisionCounts`](crate::scalar::DecisionCounts)).
+    pub fn is_certified(&self) -> bool {
+        self.stats.backend.uncertified == 0
+    }
+
     /// The geodesic distance of a vertex to its nearest source; `f64::INFINITY` if unreachable.
     pub fn vertex_distance(&self, v: VertexId) -> f64 {
         self.vertices[v.index()]

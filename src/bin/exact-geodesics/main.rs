@@ -123,6 +123,10 @@ pub struct Common {
     /// Split polygons with more than three corners into triangles instead of refusing them.
     #[arg(long)]
     pub triangulate: bool,
+    /// Fail (exit 1) when the backend leaves a decision of the propagation uncertified,
+    /// instead of warning on stderr.
+    #[arg(long)]
+    pub require_certified: bool,
 }
 
 /// Parses `--max-distance`: a number that is not negative (`inf` allowed, NaN not).
@@ -139,6 +143,7 @@ pub struct Job {
     sources: Vec<SurfacePoint>,
     options: PropagateOptions,
     backend: Backend,
+    require_certified: bool,
 }
 
 impl Common {
@@ -158,12 +163,14 @@ impl Common {
                 record_decisions: false,
             },
             backend: self.backend,
+            require_certified: self.require_certified,
         })
     }
 }
 
 impl Job {
-    /// Propagates with the chosen backend, showing progress on a terminal.
+    /// Propagates with the chosen backend, showing progress on a terminal. A run with
+    /// uncertified decisions is an error with `--require-certified`, else a warning.
     fn field<S: Scalar>(&self) -> Result<GeodesicField<'_, S>, String> {
         let bar = progress::bar(self.mesh.vertex_count());
         let field = propagate_with_progress(&self.mesh, &self.sources, &self.options, |p| {
@@ -171,6 +178,21 @@ impl Job {
         })
         .map_err(|e| e.to_string())?;
         bar.finish_and_clear();
+        if !field.is_certified() {
+            let counts = &field.stats().backend;
+            let message = format!(
+                "{} of {} decisions of the {} backend are not certified: the result may be \
+                 wrong where they fell (`stats` lists the first of them; a larger \
+                 --precision-cap may settle them)",
+                counts.uncertified,
+                counts.decisions,
+                self.backend.name()
+            );
+            if self.require_certified {
+                return Err(message);
+            }
+            eprintln!("warning: {message}");
+        }
         Ok(field)
     }
 }

@@ -54,6 +54,7 @@ pub fn run(args: &VerifyArgs) -> Result<(), String> {
         sources: vec![p],
         options: PropagateOptions::default(),
         backend: args.backend,
+        require_certified: false,
     };
     let (distance, path) = with_backend!(job.backend, S => {
         let field = job.field::<S>()?;
