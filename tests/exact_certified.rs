@@ -92,3 +92,45 @@ fn uncertified_decisions_are_warned_of_and_refused_on_demand() {
     stdout(&full);
     assert!(String::from_utf8_lossy(&full.stderr).is_empty());
 }
+
+/// `sqrt 5`, the distance across two faces of the unit cube to the opposite corner, to 60
+/// significant digits (correctly rounded by Python's `decimal` at 80 digits).
+const ROOT_5: &str = "2.23606797749978969640917366873127623544061835961152572427090";
+
+#[test]
+fn distances_print_with_certified_digits() {
+    let csv = stdout(&run(&[
+        "distance",
+        "gen:cube",
+        "--source",
+        "v:0",
+        "--backend",
+        "exact",
+        "--digits",
+        "60",
+    ]));
+    let row = csv
+        .lines()
+        .find(|l| l.starts_with("6,"))
+        .expect("the opposite corner");
+    assert_eq!(row, format!("6,{ROOT_5},0"));
+    assert!(csv.contains("\n1,1.00000000000000000000000000000000000000000000000000000000000,0\n"));
+    let json = stdout(&run(&[
+        "path",
+        "gen:cube",
+        "--source",
+        "v:0",
+        "--target",
+        "v:6",
+        "--backend",
+        "exact",
+        "--digits",
+        "30",
+    ]));
+    let json: serde_json::Value = serde_json::from_str(&json).expect("JSON");
+    assert_eq!(json["distance_digits"], ROOT_5[..31]);
+    fails_with(
+        &["distance", "gen:cube", "--source", "v:0", "--digits", "5"],
+        "--digits needs --backend exact",
+    );
+}

@@ -118,7 +118,7 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     }
 
     /// A length in the engine's scaled units, in the model's units (exactly).
-    fn to_model(&self, x: &S) -> S {
+    pub(crate) fn to_model(&self, x: &S) -> S {
         if self.mesh.unit_scale() == 1.0 {
             return x.clone();
         }

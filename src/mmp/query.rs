@@ -54,6 +54,16 @@ impl<S: Scalar> GeodesicField<'_, S> {
         }))
     }
 
+    /// [`distance_at`](Self::distance_at) in the backend's own number type (for the exact
+    /// backend, the exact value); `None` if the point cannot be reached.
+    ///
+    /// # Errors
+    /// [`PointError`] if the point is not a point of the mesh.
+    pub fn distance_at_exact(&self, point: &SurfacePoint) -> Result<Option<S>, PointError> {
+        let point = point.validated(self.mesh)?;
+        Ok(self.best_at(&point).map(|b| self.to_model(&b.distance)))
+    }
+
     /// Index (into [`sources`](Self::sources)) of the source nearest to any surface point;
     /// `None` if no source reaches it.
     ///

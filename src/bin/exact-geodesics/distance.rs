@@ -1,7 +1,8 @@
 //! `distance`: the geodesic distance of every vertex.
 
-use crate::{emit, with_backend, Backend, Common};
+use crate::{certified_digits, emit, with_backend, Backend, Common, Digits};
 use clap::{Args, ValueEnum};
+use exact_geodesics::scalar::Real;
 use exact_geodesics::{GeodesicField, Scalar, VertexId};
 use std::fmt::Write;
 use std::path::PathBuf;
@@ -16,6 +17,8 @@ pub enum DistanceFormat {
 pub struct DistanceArgs {
     #[command(flatten)]
     common: Common,
+    #[command(flatten)]
+    digits: Digits,
     /// Output format.
     #[arg(long, value_enum, default_value_t = DistanceFormat::Csv)]
     format: DistanceFormat,
@@ -24,32 +27,70 @@ pub struct DistanceArgs {
     out: Option<PathBuf>,
 }
 
-pub fn run(args: &DistanceArgs) -> Result<(), String> {
-    let job = args.common.job()?;
-    let text = with_backend!(job.backend, S => render(&job.field::<S>()?, args.format));
-    emit(args.out.as_ref(), &text)
+/// A vertex's distance as printed: an `f64`, or certified digits of the exact value.
+enum Distance {
+    Float(f64),
+    Digits(String),
 }
 
-fn render<S: Scalar>(field: &GeodesicField<'_, S>, format: DistanceFormat) -> String {
-    let n = field.mesh().vertex_count();
-    let rows = (0..n).map(|v| {
-        let v = VertexId(v as u32);
-        (v.0, field.vertex_distance(v), field.nearest_source(v))
-    });
+pub fn run(args: &DistanceArgs) -> Result<(), String> {
+    let job = args.common.job()?;
+    let rows = match args.digits.checked(job.backend)? {
+        Some(digits) => exact_rows(&job.field::<Real>()?, digits)?,
+        None => with_backend!(job.backend, S => float_rows(&job.field::<S>()?)),
+    };
+    emit(args.out.as_ref(), &render(rows, args.format))
+}
+
+type Row = (u32, Distance, Option<usize>);
+
+fn float_rows<S: Scalar>(field: &GeodesicField<'_, S>) -> Vec<Row> {
+    (0..field.mesh().vertex_count() as u32)
+        .map(VertexId)
+        .map(|v| {
+            let d = Distance::Float(field.vertex_distance(v));
+            (v.0, d, field.nearest_source(v))
+        })
+        .collect()
+}
+
+fn exact_rows(field: &GeodesicField<'_, Real>, digits: u32) -> Result<Vec<Row>, String> {
+    (0..field.mesh().vertex_count() as u32)
+        .map(VertexId)
+        .map(|v| {
+            let d = match field.vertex_distance_exact(v) {
+                Some(d) => Distance::Digits(certified_digits(&d, digits, &format!("v{}", v.0))?),
+                None => Distance::Float(f64::INFINITY),
+            };
+            Ok((v.0, d, field.nearest_source(v)))
+        })
+        .collect()
+}
+
+fn render(rows: Vec<Row>, format: DistanceFormat) -> String {
     match format {
         DistanceFormat::Csv => {
-            let mut out = String::with_capacity(32 * n);
+            let mut out = String::with_capacity(32 * rows.len());
             out.push_str("vertex,distance,source\n");
             for (v, d, s) in rows {
                 let s = s.map(|s| s.to_string()).unwrap_or_default();
-                writeln!(out, "{v},{},{s}", Shortest(d)).expect("writing to a String");
+                match d {
+                    Distance::Float(d) => writeln!(out, "{v},{},{s}", Shortest(d)),
+                    Distance::Digits(d) => writeln!(out, "{v},{d},{s}"),
+                }
+                .expect("writing to a String");
             }
             out
         }
         DistanceFormat::Json => {
             let rows: Vec<serde_json::Value> = rows
+                .into_iter()
                 .map(|(v, d, s)| {
-                    serde_json::json!({"vertex": v, "distance": d.is_finite().then_some(d), "source": s})
+                    let d = match d {
+                        Distance::Float(d) => serde_json::json!(d.is_finite().then_some(d)),
+                        Distance::Digits(d) => serde_json::json!(d),
+                    };
+                    serde_json::json!({"vertex": v, "distance": d, "source": s})
                 })
                 .collect();
             let mut out = serde_json::to_string_pretty(&serde_json::json!({

@@ -129,6 +129,40 @@ pub struct Common {
     pub require_certified: bool,
 }
 
+/// `--digits N`: significant digits of exact values (the exact backend only).
+#[derive(Args)]
+pub struct Digits {
+    /// Print distances with this many significant digits, each guaranteed: the printed value
+    /// differs from the exact distance by less than one unit in its last digit (the exact
+    /// backend only; 1 to 100000).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    pub digits: Option<u32>,
+}
+
+impl Digits {
+    /// The digits asked for, checked against the backend: only the exact one has exact
+    /// values to print.
+    pub fn checked(&self, backend: Backend) -> Result<Option<u32>, String> {
+        match (self.digits, backend) {
+            (Some(_), Backend::F64 | Backend::Adaptive) => Err(format!(
+                "--digits needs --backend exact: the {} backend has no exact values to print",
+                backend.name()
+            )),
+            (digits, _) => Ok(digits),
+        }
+    }
+}
+
+/// An exact distance in `digits` significant digits, or an error naming what it is of.
+pub fn certified_digits(value: &exact::Real, digits: u32, what: &str) -> Result<String, String> {
+    value.to_decimal(digits).ok_or_else(|| {
+        format!(
+            "{what}: {digits} certified digits are out of reach (an uncertified decision, or \
+             beyond --precision-cap)"
+        )
+    })
+}
+
 /// Parses `--max-distance`: a number that is not negative (`inf` allowed, NaN not).
 fn non_negative_distance(text: &str) -> Result<f64, String> {
     match text.parse::<f64>() {

@@ -1,7 +1,8 @@
 //! `path`: the shortest path from a target back to its nearest source.
 
-use crate::{emit, spec, with_backend, Backend, Common};
+use crate::{certified_digits, emit, spec, with_backend, Backend, Common, Digits};
 use clap::{Args, ValueEnum};
+use exact_geodesics::scalar::Real;
 use exact_geodesics::{GeodesicPath, SurfacePoint};
 use std::fmt::Write;
 use std::path::PathBuf;
@@ -17,6 +18,10 @@ pub enum PathFormat {
 pub struct PathArgs {
     #[command(flatten)]
     common: Common,
+    /// With --digits, the path's length (the target's geodesic distance) is printed with that
+    /// many certified digits too (`distance_digits` in JSON, the OBJ header).
+    #[command(flatten)]
+    digits: Digits,
     /// The point to trace back from (same forms as --source).
     #[arg(long)]
     target: String,
@@ -31,8 +36,23 @@ pub struct PathArgs {
 pub fn run(args: &PathArgs) -> Result<(), String> {
     let job = args.common.job()?;
     let target = spec::parse_point(&job.mesh, &args.common.mesh, &args.target)?;
-    let path = with_backend!(job.backend, S => job.field::<S>()?.trace_back(&target).map_err(|e| e.to_string())?);
-    emit(args.out.as_ref(), &render(&path, args.format))
+    let (path, digits) = match args.digits.checked(job.backend)? {
+        Some(digits) => {
+            let field = job.field::<Real>()?;
+            let path = field.trace_back(&target).map_err(|e| e.to_string())?;
+            let exact = field
+                .distance_at_exact(&target)
+                .map_err(|e| e.to_string())?;
+            let exact = exact.ok_or("the target is unreachable from every source")?;
+            let text = certified_digits(&exact, digits, &args.target)?;
+            (path, Some(text))
+        }
+        None => {
+            let path = with_backend!(job.backend, S => job.field::<S>()?.trace_back(&target).map_err(|e| e.to_string())?);
+            (path, None)
+        }
+    };
+    emit(args.out.as_ref(), &render(&path, digits, args.format))
 }
 
 fn simplex(p: &SurfacePoint) -> String {
@@ -45,17 +65,21 @@ fn simplex(p: &SurfacePoint) -> String {
     }
 }
 
-fn render(path: &GeodesicPath, format: PathFormat) -> String {
+/// The path in `format`; `digits`: its length in certified digits, if asked for.
+fn render(path: &GeodesicPath, digits: Option<String>, format: PathFormat) -> String {
     let mut out = String::new();
     match format {
         PathFormat::Json => {
-            let json = serde_json::json!({
+            let mut json = serde_json::json!({
                 "distance": path.distance,
                 "length": path.length(),
                 "source": path.source,
                 "points": path.points,
                 "simplices": path.simplices.iter().map(simplex).collect::<Vec<_>>(),
             });
+            if let Some(digits) = digits {
+                json["distance_digits"] = serde_json::json!(digits);
+            }
             out = serde_json::to_string_pretty(&json).expect("JSON of plain values");
             out.push('\n');
         }
@@ -73,6 +97,9 @@ fn render(path: &GeodesicPath, format: PathFormat) -> String {
                 path.source
             )
             .expect("String");
+            if let Some(digits) = digits {
+                writeln!(out, "# geodesic distance, certified digits: {digits}").expect("String");
+            }
             for p in &path.points {
                 writeln!(out, "v {} {} {}", p[0], p[1], p[2]).expect("String");
             }

@@ -181,6 +181,51 @@ impl Real {
         }
     }
 
+    /// The value in decimal with `digits` significant digits (`digits >= 1`), differing from
+    /// the exact value by less than one unit in its last digit (a rounded midpoint of a
+    /// certified enclosure at least ten times narrower than that unit); `"0"` for a value
+    /// certified zero. `None` if the sign is not certified (within the
+    /// precision cap, or because the value divides by zero) or if the cap does not allow an
+    /// enclosure that narrow. Written `d.ddd` with an exponent `e-x` / `ex` unless it is zero.
+    ///
+    /// # Example
+    /// ```
+    /// use exact_geodesics::scalar::{Field, Real};
+    /// let root2 = Real::from_integer(2).sqrt();
+    /// assert_eq!(root2.to_decimal(12).as_deref(), Some("1.41421356237"));
+    /// let tiny = Real::from_integer(1) / Real::from_integer(3_000_000);
+    /// assert_eq!(tiny.to_decimal(4).as_deref(), Some("3.333e-7"));
+    /// assert_eq!((root2.clone() * &root2 - Real::from_integer(2)).to_decimal(5).as_deref(), Some("0"));
+    /// ```
+    pub fn to_decimal(&self, digits: u32) -> Option<String> {
+        use rug::ops::Pow;
+        let digits = digits.max(1);
+        match self.certified_sign() {
+            (_, Certificate::Uncertified(_)) => return None,
+            (Sign::Zero, _) => return Some("0".to_owned()),
+            _ => {}
+        }
+        // log2(10) < 3.33 bits per digit, and a margin for the factor of ten.
+        let mut precision = (digits.saturating_mul(4) + 64).max(FIRST_PRECISION);
+        let cap = precision_cap().max(precision);
+        loop {
+            let (lo, hi) = refine::enclosure(&self.0, precision);
+            let mid = Float::with_val(precision, &lo + &hi) / 2u32;
+            let width = Float::with_val(precision, &hi - &lo);
+            // One unit in the last of `digits` digits is at least |mid| 10^(1 - digits) / 10
+            // (the leading digit is at most 9.99...); the width must be a tenth of it.
+            let unit = Float::with_val(precision, mid.abs_ref())
+                * Float::with_val(precision, 10u32).pow(-i64::from(digits));
+            if width * 10u32 <= unit {
+                return Some(mid.to_string_radix(10, Some(digits as usize)));
+            }
+            if precision >= cap {
+                return None;
+            }
+            precision = precision.saturating_mul(2).min(cap);
+        }
+    }
+
     /// Whether the value is shown positive by refinement alone (no zero certificate), within
     /// a modest precision.
     fn positive_without_zero_test(&self) -> bool {
