@@ -134,3 +134,88 @@ fn distances_print_with_certified_digits() {
         "--digits needs --backend exact",
     );
 }
+
+mod zero_proofs {
+    use exact_geodesics::scalar::exact::{Certificate, ZeroProof};
+    use exact_geodesics::scalar::{Field, Real, Ring, Sign};
+    use proptest::prelude::*;
+
+    fn q(n: u32, d: u32) -> Real {
+        Real::from_integer(i64::from(n)) / Real::from_integer(i64::from(d))
+    }
+
+    /// `2^-k`, exactly (`k <= 2046`).
+    fn tiny(k: u32) -> Real {
+        let half = k / 2;
+        Real::from_f64(2f64.powi(-(half as i32))) * &Real::from_f64(2f64.powi(-((k - half) as i32)))
+    }
+
+    /// `sqrt(a + sqrt(b)) c + sqrt(a c) / (b + 1)`: increasing in `a`, built anew on each call.
+    fn nested(a: &Real, b: &Real, c: &Real) -> Real {
+        let one = Real::from_integer(1);
+        (a.clone() + &b.sqrt()).sqrt() * c + &((a.clone() * c).sqrt() / (b.clone() + &one))
+    }
+
+    /// `|R p|^2 - |p|^2` for the rotation `R` by the angle of `(x, y)` (cosine `cx / r`), built
+    /// as an unfolding builds it: zero when `cx = x`, positive when `cx > x > 0`.
+    fn rotation_gap(cx: &Real, x: &Real, y: &Real, p: [&Real; 2]) -> Real {
+        let r = (x.clone() * x + &(y.clone() * y)).sqrt();
+        let (c, s) = (cx.clone() / &r, y.clone() / &r);
+        let u = c.clone() * p[0] - &(s.clone() * p[1]);
+        let v = s * p[0] + &(c * p[1]);
+        u.clone() * &u + &(v.clone() * &v) - &(p[0].clone() * p[0] + &(p[1].clone() * p[1]))
+    }
+
+    fn assert_proved_zero(value: &Real) {
+        let (sign, certificate) = value.certified_sign();
+        assert_eq!(sign, Sign::Zero);
+        assert!(
+            matches!(certificate, Certificate::CertifiedZero(_)),
+            "{certificate:?}"
+        );
+    }
+
+    fn assert_positive_not_zero(value: &Real) {
+        let (sign, certificate) = value.certified_sign();
+        assert!(
+            !matches!(certificate, Certificate::CertifiedZero(_)),
+            "a non-zero value claimed zero: {certificate:?}"
+        );
+        assert_eq!(
+            (sign, certificate),
+            (Sign::Positive, Certificate::Refinement)
+        );
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+
+        /// Two copies of one expression differ by a structural zero; perturbing one leaf of
+        /// one copy by 2^-k is never taken for a zero, and its sign is right.
+        #[test]
+        fn copies_are_zero_by_structure_and_perturbed_copies_are_not_zero(
+            (an, ad, bn, bd, cn, cd) in (1u32..1000, 1u32..1000, 1u32..1000, 1u32..1000, 1u32..1000, 1u32..1000),
+            k in 200u32..2000,
+        ) {
+            let (a, b, c) = (q(an, ad), q(bn, bd), q(cn, cd));
+            let zero = nested(&a, &b, &c) - &nested(&a, &b, &c);
+            prop_assert_eq!(zero.certified_sign(), (Sign::Zero, Certificate::CertifiedZero(ZeroProof::Structure)));
+            let perturbed = nested(&(a.clone() + &tiny(k)), &b, &c) - &nested(&a, &b, &c);
+            assert_positive_not_zero(&perturbed);
+        }
+
+        /// A rotation keeps lengths (an identity of the unfoldings, not of structure); a
+        /// cosine perturbed by 2^-k stretches them, and that is never taken for a zero.
+        #[test]
+        fn rotations_keep_lengths_and_perturbed_ones_do_not(
+            (xn, yn, pn, rn) in (1u32..1000, 1u32..1000, 1u32..1000, 1u32..1000),
+            k in 200u32..2000,
+        ) {
+            let (x, y) = (q(xn, 7), q(yn, 11));
+            let (p0, p1) = (q(pn, 13), q(rn, 3));
+            assert_proved_zero(&rotation_gap(&x, &x, &y, [&p0, &p1]));
+            let stretched = x.clone() + &tiny(k);
+            assert_positive_not_zero(&rotation_gap(&stretched, &x, &y, [&p0, &p1]));
+        }
+    }
+}
