@@ -351,6 +351,16 @@ fn cli_table1_writes_csv_and_json_with_one_row_per_model_backend_and_source() {
     assert_eq!(models[11], "gen:icosphere:2");
     assert_eq!(rows[3][1], "adaptive");
     assert_eq!(rows[6][3..5], ["320", "480"]);
+    // Observations 1 and 2: a histogram per model and the distributions together (f64 only).
+    for plot in [
+        "table1_wedges_0_gen_cube.svg",
+        "table1_wedges_1_gen_icosphere_2.svg",
+        "table1_distributions.svg",
+    ] {
+        let svg = std::fs::read_to_string(dir.join(plot)).expect("the plot was written");
+        assert!(svg.starts_with("<svg") && svg.contains("w(e)"), "{plot}");
+    }
+    assert!(!dir.join("table1_wedges_2_gen_cube.svg").exists());
     let json: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("table1.json")).expect("written"))
             .expect("JSON");
@@ -516,6 +526,15 @@ fn cli_observation3_writes_the_scale_and_resolution_series_and_the_fits() {
     )
     .expect("JSON");
     assert_eq!(json["fits"].as_array().map(Vec::len), Some(6));
+    for plot in ["observation3_scale.svg", "observation3_resolution.svg"] {
+        let svg = std::fs::read_to_string(dir.join(plot)).expect("the plot was written");
+        assert!(svg.starts_with("<svg"), "{plot}");
+    }
+    assert!(
+        std::fs::read_to_string(dir.join("observation3_resolution.svg"))
+            .expect("written")
+            .contains("exponent")
+    );
 }
 
 #[test]

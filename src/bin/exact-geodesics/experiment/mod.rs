@@ -2,6 +2,7 @@
 //! seeded source vertices, written as CSV, JSON and SVG plots into a directory.
 
 mod observation3;
+mod plots;
 
 use crate::{load, progress, Backend};
 use clap::{Args, Subcommand};
@@ -23,8 +24,8 @@ pub struct ExperimentArgs {
 #[derive(Subcommand)]
 enum Table {
     /// Table 1: wedges w(e) per edge (mean, std, max, skewness, share of edges holding half)
-    /// and propagation time, per model, backend and source vertex; writes DIR/table1.csv and
-    /// DIR/table1.json.
+    /// and propagation time, per model, backend and source vertex; writes DIR/table1.csv,
+    /// DIR/table1.json and the plots of w(e) (Observations 1 and 2).
     Table1(TableArgs),
     /// Table 2: edge lengths l(e) of the model normalized into the unit cube and wedges per
     /// unit length, per model, backend and source vertex; writes DIR/table2.csv and
@@ -33,7 +34,7 @@ enum Table {
     /// Observation 3 by scale (each model scaled uniformly: DIR/observation3_scale.csv) and by
     /// resolution (icospheres, planar grids and refinements of each model, normalized into the
     /// unit cube: DIR/observation3_resolution.csv, the fitted exponents of w/l against l in
-    /// DIR/observation3_fit.csv), with DIR/observation3.json.
+    /// DIR/observation3_fit.csv), with DIR/observation3.json and the plots.
     Observation3(observation3::Observation3Args),
 }
 
@@ -139,7 +140,8 @@ pub fn run(args: &ExperimentArgs) -> Result<(), String> {
             let runs = measure_models(t)?;
             let rows: Vec<Table1Row> = rows_of(&runs, Table1Row::new);
             let records = rows.iter().map(Table1Row::csv_record);
-            write_table(&t.run.out, "table1", Table1Row::CSV_HEADER, records, &rows)
+            write_table(&t.run.out, "table1", Table1Row::CSV_HEADER, records, &rows)?;
+            plots::table1(&t.run.out, &runs)
         }
         Table::Table2(t) => {
             let rows: Vec<Table2Row> = rows_of(&measure_models(t)?, Table2Row::new);

@@ -1,6 +1,6 @@
 //! `experiment observation3`: Observation 3 [LZT §6] tested by scale and by resolution.
 
-use super::{measure_one, write_csv, write_json, RunArgs};
+use super::{measure_one, plots, write_csv, write_json, RunArgs};
 use clap::{Args, ValueEnum};
 use exact_geodesics::experiments::{
     fit_resolution, normalize_to_unit_cube, random_sources, scale_factor, scale_uniformly,
@@ -89,6 +89,8 @@ pub fn run(args: &Observation3Args) -> Result<(), String> {
         ResolutionFit::CSV_HEADER,
         fits.iter().map(ResolutionFit::csv_record),
     )?;
+    plots::scale(&out.join("observation3_scale.svg"), &scale)?;
+    plots::resolution(&out.join("observation3_resolution.svg"), &fits)?;
     write_json(
         &out.join("observation3.json"),
         &Observation3 {
