@@ -262,6 +262,7 @@ fn observation3_fit_averages_sources_then_fits_the_exponent() {
                 edge_length_mean: l,
                 wedges_mean: w / l,
                 wedges_per_unit_length: w / l / l,
+                uncertified: 0,
             })
         })
         .collect();

@@ -6,7 +6,7 @@
 //! `ln(w/l) = ln w - ln l`, the exponent of `w` alone is that exponent plus one.
 
 use super::tables::csv_field;
-use super::{LineFit, ModelShape, WedgeCounts};
+use super::{LineFit, Measurement, ModelShape};
 use crate::scalar::Backend;
 use serde::Serialize;
 
@@ -33,12 +33,14 @@ pub struct ResolutionRow {
     pub wedges_mean: f64,
     /// `mean w(e) / mean l(e)`.
     pub wedges_per_unit_length: f64,
+    /// Decisions the exact backend left uncertified (0 in the float backends).
+    pub uncertified: u64,
 }
 
 impl ResolutionRow {
     /// The CSV header, in field order.
     pub const CSV_HEADER: &'static str = "series,model,level,backend,source,faces,edges,\
-edge_length_mean,wedges_mean,wedges_per_unit_length";
+edge_length_mean,wedges_mean,wedges_per_unit_length,uncertified";
 
     /// The row of `model`, level `level` of `series`, measured in `backend`; `shape` is the
     /// model normalized into the unit cube.
@@ -48,8 +50,9 @@ edge_length_mean,wedges_mean,wedges_per_unit_length";
         level: u32,
         backend: Backend,
         shape: &ModelShape,
-        counts: &WedgeCounts,
+        measured: &Measurement,
     ) -> Self {
+        let counts = &measured.counts;
         ResolutionRow {
             series: series.to_owned(),
             model: model.to_owned(),
@@ -61,13 +64,14 @@ edge_length_mean,wedges_mean,wedges_per_unit_length";
             edge_length_mean: shape.edge_length.mean,
             wedges_mean: counts.per_edge.mean,
             wedges_per_unit_length: counts.per_edge.mean / shape.edge_length.mean,
+            uncertified: measured.uncertified,
         }
     }
 
     /// The row as one CSV record (no line end), fields as in [`Self::CSV_HEADER`].
     pub fn csv_record(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{}",
             csv_field(&self.series),
             csv_field(&self.model),
             self.level,
@@ -78,6 +82,7 @@ edge_length_mean,wedges_mean,wedges_per_unit_length";
             self.edge_length_mean,
             self.wedges_mean,
             self.wedges_per_unit_length,
+            self.uncertified,
         )
     }
 }
@@ -150,7 +155,7 @@ impl ResolutionFit {
 ///         ResolutionRow {
 ///             series: "s".into(), model: format!("m{level}"), level, backend: Backend::F64,
 ///             source: 0, faces: 0, edges: 0, edge_length_mean: l, wedges_mean: 1.0,
-///             wedges_per_unit_length: 1.0 / l,
+///             wedges_per_unit_length: 1.0 / l, uncertified: 0,
 ///         }
 ///     })
 ///     .collect();

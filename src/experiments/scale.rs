@@ -53,13 +53,15 @@ pub struct ScaleRow {
     pub distance_max_difference: f64,
     /// Propagation time in seconds.
     pub seconds: f64,
+    /// Decisions the exact backend left uncertified (0 in the float backends).
+    pub uncertified: u64,
 }
 
 impl ScaleRow {
     /// The CSV header, in field order.
     pub const CSV_HEADER: &'static str = "model,backend,source,scale_base,scale_exponent,scale,\
 edges,wedges_mean,wedges_max,wedges_total,edges_changed,eq2_none,eq2_one,eq2_two,eq2_infinite,\
-distance_sum,distance_max_difference,seconds";
+distance_sum,distance_max_difference,seconds,uncertified";
 
     /// The row of `scaled`, a run on `model` scaled by `base^exponent`, against `reference`,
     /// the run from the same source in the same backend on the unscaled model.
@@ -129,13 +131,14 @@ distance_sum,distance_max_difference,seconds";
                 difference
             },
             seconds: scaled.counts.seconds,
+            uncertified: scaled.uncertified,
         }
     }
 
     /// The row as one CSV record (no line end), fields as in [`Self::CSV_HEADER`].
     pub fn csv_record(&self) -> String {
         format!(
-            "{},{},{},{},{},{:e},{},{},{},{},{},{},{},{},{},{},{:e},{}",
+            "{},{},{},{},{},{:e},{},{},{},{},{},{},{},{},{},{},{:e},{},{}",
             csv_field(&self.model),
             self.backend.name(),
             self.source,
@@ -154,6 +157,7 @@ distance_sum,distance_max_difference,seconds";
             self.distance_sum,
             self.distance_max_difference,
             self.seconds,
+            self.uncertified,
         )
     }
 }

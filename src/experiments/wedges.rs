@@ -63,6 +63,9 @@ pub struct Measurement {
     pub eq2: Eq2Counts,
     /// The distance of every vertex in the model's units (`f64::INFINITY` where unreachable).
     pub distances: Vec<f64>,
+    /// Decisions the exact backend could not certify within its precision cap (always 0 in
+    /// the float backends): where this is not 0, the run is not exact.
+    pub uncertified: u64,
 }
 
 /// Propagates from `source` in the number type `S` and reads the [`Measurement`]; `progress`
@@ -103,6 +106,7 @@ pub fn measure<S: Scalar>(
         },
         eq2: field.stats().eq2.clone(),
         distances: field.vertex_distances(),
+        uncertified: field.stats().backend.uncertified,
         per_edge,
     })
 }

@@ -143,7 +143,7 @@ fn resolution_series(args: &Observation3Args) -> Result<Vec<ResolutionRow>, Stri
         for backend in args.run.backends() {
             for m in args.run.measure_sources(model, mesh, backend)? {
                 rows.push(ResolutionRow::new(
-                    series, model, level, backend, &shape, &m.counts,
+                    series, model, level, backend, &shape, &m,
                 ));
             }
         }
