@@ -556,6 +556,29 @@ fn cli_observation3_writes_the_scale_and_resolution_series_and_the_fits() {
 }
 
 #[test]
+fn cli_observation3_runs_only_the_series_asked_for() {
+    let dir = out_dir("o3-grid");
+    stdout(&run(&[
+        "experiment",
+        "observation3",
+        "gen:cube",
+        "--series",
+        "grid",
+        "--levels",
+        "3",
+        "--scale-exponents",
+        "0",
+        "--sources",
+        "1",
+        "--out",
+        dir.to_str().expect("UTF-8"),
+    ]));
+    let (_, fits) = read_csv(&dir.join("observation3_fit.csv"));
+    assert_eq!(fits.len(), 1);
+    assert_eq!(fits[0][..3], ["grid", "f64", "3"]);
+}
+
+#[test]
 fn cli_errors_name_the_file_and_exit_non_zero() {
     let dir = out_dir("err");
     fails_with(

@@ -17,13 +17,16 @@ pub struct Observation3Args {
     /// resolution series of its own).
     #[arg(required = true)]
     meshes: Vec<String>,
+    /// Resolution series to run (a list): icospheres, planar grids, refinements of the models.
+    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Series::Icosphere, Series::Grid, Series::Refined])]
+    series: Vec<Series>,
     /// Levels of the built-in resolution series: gen:icosphere:K for K = 1..=N and
     /// gen:grid:n,n for n = 4, 8, ..., 2^(N+1).
     #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(3..=6))]
     levels: u32,
-    /// Midpoint subdivisions of each model for its resolution series (levels 0..=R, each face
-    /// split into four per level; the surface stays the same); 0 leaves the models out of the
-    /// resolution series.
+    /// Midpoint subdivisions of each model for its resolution series `refined` (levels 0..=R,
+    /// each face split into four per level; the surface stays the same); 0 leaves the models
+    /// out of the resolution series.
     #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u32).range(0..=4))]
     refinements: u32,
     /// Powers of --scale-base by which each model is scaled (a list: -6,0,6).
@@ -41,6 +44,16 @@ pub struct Observation3Args {
     scale_base: ScaleBase,
     #[command(flatten)]
     run: RunArgs,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Series {
+    /// gen:icosphere:K, K = 1..=N (a sphere ever finer).
+    Icosphere,
+    /// gen:grid:n,n, n = 4..=2^(N+1) (the unit square ever finer).
+    Grid,
+    /// Each model subdivided 0..=R times (the same surface).
+    Refined,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -150,14 +163,24 @@ fn resolution_series(args: &Observation3Args) -> Result<Vec<ResolutionRow>, Stri
         Ok::<(), String>(())
     };
     for level in 1..=args.levels {
-        for (series, spec) in [
-            ("icosphere", format!("gen:icosphere:{level}")),
-            ("grid", format!("gen:grid:{n},{n}", n = 2u32 << level)),
+        for (series, name, spec) in [
+            (
+                Series::Icosphere,
+                "icosphere",
+                format!("gen:icosphere:{level}"),
+            ),
+            (
+                Series::Grid,
+                "grid",
+                format!("gen:grid:{n},{n}", n = 2u32 << level),
+            ),
         ] {
-            measure(series, &spec, level, &args.run.unit_mesh(&spec)?)?;
+            if args.series.contains(&series) {
+                measure(name, &spec, level, &args.run.unit_mesh(&spec)?)?;
+            }
         }
     }
-    if args.refinements > 0 {
+    if args.series.contains(&Series::Refined) && args.refinements > 0 {
         for spec in &args.meshes {
             let series = format!("refined:{spec}");
             let mut mesh = crate::load::load_mesh(spec, args.run.triangulate)?;
