@@ -1,12 +1,14 @@
-//! The experiments of [LZT §6] (Tables 1-2): statistics against hand-computed values, the
-//! `experiment` command's files and columns, and its agreement with `stats`.
+//! The experiments of [LZT §6] (Tables 1-2, Observations 1-3): statistics against
+//! hand-computed values, the `experiment` command's files and columns, and its agreement with
+//! `stats`.
 
 mod common;
 
 use common::cli::{fails_with, run, stdout};
 use exact_geodesics::experiments::{
-    count_wedges_in, min_angle_summary, normalize_to_unit_cube, random_sources, ModelShape,
-    Summary, Table1Row, Table2Row,
+    count_wedges_in, fit_resolution, measure_in, min_angle_summary, normalize_to_unit_cube,
+    random_sources, scale_factor, scale_uniformly, ModelShape, ResolutionRow, ScaleRow, Summary,
+    Table1Row, Table2Row,
 };
 use exact_geodesics::mesh::shapes;
 use exact_geodesics::scalar::Backend;
@@ -193,6 +195,115 @@ fn table_rows_carry_the_counts_and_the_ratio() {
     );
 }
 
+#[test]
+fn observation3_a_power_of_two_scale_changes_nothing_in_any_backend() {
+    // Multiplying every coordinate by 2^k is exact, and so is every sum, product, quotient and
+    // square root the engine forms from them (up to the same power of two), as long as nothing
+    // under- or overflows: a backend whose decisions were absolute (an epsilon in model units)
+    // would change its wedges with k; ours must not. (The exact backend, slow, on the cube.)
+    for backend in ALL_BACKENDS {
+        let model = match backend {
+            Backend::Exact => shapes::cube(),
+            _ => shapes::icosphere(2),
+        };
+        let unit = normalize_to_unit_cube(&model).expect("has extent");
+        let reference = measure_in(backend, &unit, VertexId(5), |_| {}).expect("a vertex");
+        for k in [-30, 9, 40] {
+            let mesh = scale_uniformly(&unit, scale_factor(2, k)).expect("in range");
+            let scaled = measure_in(backend, &mesh, VertexId(5), |_| {}).expect("a vertex");
+            let row = ScaleRow::new("ico", backend, 2, k, &reference, &scaled);
+            assert_eq!(row.edges_changed, 0, "{backend:?} at 2^{k}");
+            assert_eq!(scaled.eq2, reference.eq2, "{backend:?} at 2^{k}");
+            assert_eq!(row.distance_max_difference, 0.0, "{backend:?} at 2^{k}");
+            assert_eq!(row.wedges_total, reference.counts.total);
+        }
+    }
+}
+
+#[test]
+fn observation3_scale_row_compares_distances_in_the_reference_units() {
+    // Scaling the unit cube by 10 and comparing with itself: distances divided by 10 are the
+    // reference's to rounding, and their sum from corner 0 is, by hand, 3 corners at 1, 3 at
+    // sqrt 2 and the far one at sqrt 5 (over two faces).
+    let cube = shapes::cube();
+    let reference = measure_in(Backend::F64, &cube, VertexId(0), |_| {}).expect("a vertex");
+    let ten = scale_uniformly(&cube, 10.0).expect("in range");
+    let scaled = measure_in(Backend::F64, &ten, VertexId(0), |_| {}).expect("a vertex");
+    let row = ScaleRow::new("cube", Backend::F64, 10, 1, &reference, &scaled);
+    assert_eq!((row.scale, row.edges, row.wedges_total), (10.0, 18, 19));
+    assert!(close(
+        row.distance_sum,
+        3.0 + 3.0 * 2f64.sqrt() + 5f64.sqrt()
+    ));
+    assert!(row.distance_max_difference < 1e-15);
+    assert_eq!(
+        row.csv_record().split(',').count(),
+        ScaleRow::CSV_HEADER.split(',').count()
+    );
+    assert!(scale_uniformly(&cube, 0.0).is_err());
+    assert!(scale_uniformly(&cube, f64::INFINITY).is_err());
+}
+
+#[test]
+fn observation3_fit_averages_sources_then_fits_the_exponent() {
+    // Two sources per level with w = 1/l and 3/l at l = 2^-k: the mean is w = 2/l, so
+    // w/l = 2 l^-2: exponent -2 and intercept ln 2 (averaging logarithms would give ln sqrt 3).
+    let rows: Vec<ResolutionRow> = (1..=4u32)
+        .flat_map(|level| {
+            let l = 0.5f64.powi(level as i32);
+            [1.0, 3.0].map(|w| ResolutionRow {
+                series: "s".into(),
+                model: format!("m{level}"),
+                level,
+                backend: Backend::F64,
+                source: w as u32,
+                faces: 0,
+                edges: 0,
+                edge_length_mean: l,
+                wedges_mean: w / l,
+                wedges_per_unit_length: w / l / l,
+                uncertified: 0,
+            })
+        })
+        .collect();
+    let fits = fit_resolution(&rows);
+    assert_eq!(fits.len(), 1);
+    assert_eq!(fits[0].points.len(), 4);
+    assert_eq!(fits[0].points[0].wedges_mean, 4.0);
+    let fit = fits[0].fit.expect("four levels");
+    assert!((fit.slope + 2.0).abs() < 1e-12, "{}", fit.slope);
+    assert!(
+        (fit.intercept - 2f64.ln()).abs() < 1e-12,
+        "{}",
+        fit.intercept
+    );
+    assert!(fit.slope_std_error < 1e-12);
+    assert!(fits[0].csv_record().starts_with("s,f64,4,"));
+}
+
+#[test]
+fn observation3_refinement_keeps_the_surface() {
+    // Midpoint subdivision adds flat vertices only: from corner 0 of the cube subdivided twice
+    // the far corner is still at sqrt 5, and the centre (0.5, 0.5, 1) of the top face, with
+    // the side y = 0 and the top unfolded into one plane, at |(0.5, 1.5)| = sqrt 2.5.
+    let fine = shapes::subdivide(&shapes::subdivide(&shapes::cube()));
+    assert_eq!((fine.face_count(), fine.vertex_count()), (192, 98));
+    let field = propagate::<f64>(
+        &fine,
+        &[SurfacePoint::Vertex(VertexId(0))],
+        &PropagateOptions::default(),
+    )
+    .expect("a vertex");
+    assert!(close(field.vertex_distance(VertexId(6)), 5f64.sqrt()));
+    let centre = (0..fine.vertex_count() as u32)
+        .find(|&v| fine.positions()[v as usize] == [0.5, 0.5, 1.0])
+        .expect("the centre of the top face is a vertex after two subdivisions");
+    assert!(close(
+        field.vertex_distance(VertexId(centre)),
+        2.5f64.sqrt()
+    ));
+}
+
 const TABLE1_COLUMNS: [&str; 9] = [
     "model",
     "backend",
@@ -241,6 +352,16 @@ fn cli_table1_writes_csv_and_json_with_one_row_per_model_backend_and_source() {
     assert_eq!(models[11], "gen:icosphere:2");
     assert_eq!(rows[3][1], "adaptive");
     assert_eq!(rows[6][3..5], ["320", "480"]);
+    // Observations 1 and 2: a histogram per model and the distributions together (f64 only).
+    for plot in [
+        "table1_wedges_0_gen_cube.svg",
+        "table1_wedges_1_gen_icosphere_2.svg",
+        "table1_distributions.svg",
+    ] {
+        let svg = std::fs::read_to_string(dir.join(plot)).expect("the plot was written");
+        assert!(svg.starts_with("<svg") && svg.contains("w(e)"), "{plot}");
+    }
+    assert!(!dir.join("table1_wedges_2_gen_cube.svg").exists());
     let json: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.join("table1.json")).expect("written"))
             .expect("JSON");
@@ -289,41 +410,172 @@ fn cli_table2_ratio_is_mean_wedges_over_mean_length() {
 }
 
 #[test]
-fn cli_table1_agrees_with_stats_for_the_same_model_and_source() {
-    // gen:cube is already in the unit cube, so normalization leaves it unchanged.
-    let dir = out_dir("agree");
+fn cli_table1_agrees_with_stats_for_the_same_model_source_and_backend() {
+    // Both models lie in the unit cube already, so normalization leaves them unchanged. The
+    // cube has 19 wedges from a corner; the flat grid has up to 3 on an edge, in adaptive.
+    for (model, backend) in [("gen:cube", "f64"), ("gen:grid:8,8", "adaptive")] {
+        let dir = out_dir("agree");
+        let d = dir.to_str().expect("UTF-8 path");
+        stdout(&run(&[
+            "experiment",
+            "table1",
+            model,
+            "--backend",
+            backend,
+            "--sources",
+            "4",
+            "--out",
+            d,
+        ]));
+        let json: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(dir.join("table1.json")).expect("written"),
+        )
+        .expect("JSON");
+        let rows = json.as_array().expect("an array of rows");
+        assert_eq!(rows.len(), 4);
+        let mut largest = 0.0f64;
+        for row in rows {
+            let source = &row["source"];
+            let stats: serde_json::Value = serde_json::from_str(&stdout(&run(&[
+                "stats",
+                model,
+                "--backend",
+                backend,
+                "--source",
+                &format!("v:{source}"),
+            ])))
+            .expect("JSON");
+            let per_edge = &stats["wedges_per_edge"];
+            for (col, key) in [
+                ("wedges_mean", "mean"),
+                ("wedges_std", "std"),
+                ("wedges_max", "max"),
+            ] {
+                let ours = row[col].as_f64();
+                assert_eq!(ours, per_edge[key].as_f64(), "{model} {col} from v{source}");
+            }
+            assert_eq!(
+                stats["wedges"], row["wedges_total"],
+                "{model} from v{source}"
+            );
+            largest = largest.max(row["wedges_max"].as_f64().expect("a number"));
+        }
+        assert!(largest >= 2.0, "{model}: {largest}");
+    }
+}
+
+const SCALE_COLUMNS: [&str; 6] = [
+    "model",
+    "backend",
+    "source",
+    "scale_exponent",
+    "wedges_mean",
+    "distance_max_difference",
+];
+const RESOLUTION_COLUMNS: [&str; 6] = [
+    "series",
+    "model",
+    "level",
+    "edge_length_mean",
+    "wedges_mean",
+    "wedges_per_unit_length",
+];
+
+#[test]
+fn cli_observation3_writes_the_scale_and_resolution_series_and_the_fits() {
+    let dir = out_dir("o3");
     let d = dir.to_str().expect("UTF-8 path");
     stdout(&run(&[
         "experiment",
-        "table1",
+        "observation3",
         "gen:cube",
+        "--levels",
+        "3",
+        "--refinements",
+        "2",
+        "--scale-exponents=-3,0,3",
+        "--scale-base",
+        "2",
         "--sources",
-        "4",
+        "1",
+        "--backend",
+        "f64,adaptive",
         "--out",
         d,
     ]));
-    let (header, rows) = read_csv(&dir.join("table1.csv"));
-    for row in rows {
-        let source = &row[column(&header, "source")];
-        let stats: serde_json::Value = serde_json::from_str(&stdout(&run(&[
-            "stats",
-            "gen:cube",
-            "--source",
-            &format!("v:{source}"),
-        ])))
-        .expect("JSON");
-        let per_edge = &stats["wedges_per_edge"];
-        for (col, key) in [
-            ("wedges_mean", "mean"),
-            ("wedges_std", "std"),
-            ("wedges_max", "max"),
-        ] {
-            let ours: f64 = row[column(&header, col)].parse().expect("a number");
-            assert_eq!(Some(ours), per_edge[key].as_f64(), "{col} from v{source}");
-        }
-        let total = &row[column(&header, "wedges_total")];
-        assert_eq!(stats["wedges"].to_string(), *total);
+    let (header, rows) = read_csv(&dir.join("observation3_scale.csv"));
+    for c in SCALE_COLUMNS {
+        column(&header, c);
     }
+    // 3 powers of two x 2 backends x 1 source; exact scales change nothing.
+    assert_eq!(rows.len(), 6);
+    for row in &rows {
+        assert_eq!(row[column(&header, "edges_changed")], "0");
+        assert_eq!(row[column(&header, "distance_max_difference")], "0e0");
+    }
+    let (header, rows) = read_csv(&dir.join("observation3_resolution.csv"));
+    for c in RESOLUTION_COLUMNS {
+        column(&header, c);
+    }
+    // Icospheres 1..3 and grids 4, 8, 16 (quoted names: "gen:grid:4,4" has a comma, so count
+    // lines by their series) and the cube refined 0..2 times, in 2 backends.
+    let series = |name: &str| rows.iter().filter(|r| r[0] == name).count();
+    assert_eq!(series("icosphere"), 3 * 2);
+    assert_eq!(series("grid"), 3 * 2);
+    assert_eq!(series("refined:gen:cube"), 3 * 2);
+    let refined: Vec<&Vec<String>> = rows.iter().filter(|r| r[0] == "refined:gen:cube").collect();
+    assert_eq!(refined[0][1], "gen:cube@0");
+    let last = refined[5];
+    assert_eq!((last[1].as_str(), last[2].as_str()), ("gen:cube@2", "2"));
+    assert_eq!((last[3].as_str(), last[5].as_str()), ("adaptive", "192"));
+    let (header, fits) = read_csv(&dir.join("observation3_fit.csv"));
+    assert_eq!(fits.len(), 3 * 2);
+    for fit in &fits {
+        let num = |c: &str| {
+            fit[column(&header, c)]
+                .parse::<f64>()
+                .expect("a fitted number")
+        };
+        assert_eq!(fit[column(&header, "levels")], "3");
+        assert!(num("ci95_low") <= num("exponent") && num("exponent") <= num("ci95_high"));
+    }
+    let json: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(dir.join("observation3.json")).expect("written"),
+    )
+    .expect("JSON");
+    assert_eq!(json["fits"].as_array().map(Vec::len), Some(6));
+    for plot in ["observation3_scale.svg", "observation3_resolution.svg"] {
+        let svg = std::fs::read_to_string(dir.join(plot)).expect("the plot was written");
+        assert!(svg.starts_with("<svg"), "{plot}");
+    }
+    assert!(
+        std::fs::read_to_string(dir.join("observation3_resolution.svg"))
+            .expect("written")
+            .contains("exponent")
+    );
+}
+
+#[test]
+fn cli_observation3_runs_only_the_series_asked_for() {
+    let dir = out_dir("o3-grid");
+    stdout(&run(&[
+        "experiment",
+        "observation3",
+        "gen:cube",
+        "--series",
+        "grid",
+        "--levels",
+        "3",
+        "--scale-exponents",
+        "0",
+        "--sources",
+        "1",
+        "--out",
+        dir.to_str().expect("UTF-8"),
+    ]));
+    let (_, fits) = read_csv(&dir.join("observation3_fit.csv"));
+    assert_eq!(fits.len(), 1);
+    assert_eq!(fits[0][..3], ["grid", "f64", "3"]);
 }
 
 #[test]

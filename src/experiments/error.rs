@@ -13,9 +13,14 @@ pub enum ExperimentError {
         /// The one point.
         point: [f64; 3],
     },
-    /// The normalized coordinates do not make a valid mesh (an extent so small that scaling
-    /// overflows).
-    #[error("the normalized mesh is invalid: {0}")]
+    /// A scale factor that is not a finite positive number.
+    #[error("the scale factor {factor} is not finite and positive")]
+    Scale {
+        /// The factor given.
+        factor: f64,
+    },
+    /// The normalized or scaled coordinates do not make a valid mesh (they overflow).
+    #[error("the normalized or scaled mesh is invalid: {0}")]
     Mesh(#[from] MeshError),
     /// The source is not a vertex of the mesh.
     #[error("bad source: {0}")]

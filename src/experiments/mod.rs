@@ -8,6 +8,11 @@
 //!   minimal angle, with the rest of that distribution ([`min_angle_summary`]).
 //! - Table 2: the edge length l(e) of the normalized model ([`ModelShape`]) and the wedges per
 //!   unit length `mean w(e) / mean l(e)`.
+//! - Observation 3, that the wedges per unit length grow as the edges shorten, tested two
+//!   ways: by scale ([`scale_uniformly`], [`ScaleRow`]: the same surface in other units, where a
+//!   geometric property cannot change) and by resolution ([`ResolutionRow`], [`fit_resolution`]:
+//!   one surface meshed ever finer, with the exponent of `w/l ~ l^k` fitted by least squares
+//!   with its 95 % confidence interval, [`LineFit`]).
 //! - The paper does not say where its sources were: [`random_sources`] draws seeded vertices.
 //!
 //! Statistics are population moments ([`Summary`]). Nothing here prints; the command
@@ -30,7 +35,10 @@
 //! ```
 
 mod error;
+mod fit;
 mod normalize;
+mod resolution;
+mod scale;
 mod sources;
 mod summary;
 mod tables;
@@ -38,9 +46,15 @@ mod uniformity;
 mod wedges;
 
 pub use error::ExperimentError;
-pub use normalize::normalize_to_unit_cube;
+pub use fit::{student_t_critical, LineFit, CONFIDENCE};
+pub use normalize::{normalize_to_unit_cube, scale_uniformly};
+pub use resolution::{fit_resolution, ResolutionFit, ResolutionPoint, ResolutionRow};
+pub use scale::{scale_factor, ScaleRow};
 pub use sources::random_sources;
 pub use summary::Summary;
 pub use tables::{ModelShape, Table1Row, Table2Row};
 pub use uniformity::{min_angle_summary, min_angles_degrees};
-pub use wedges::{count_wedges, count_wedges_in, share_holding_half, WedgeCounts};
+pub use wedges::{
+    count_wedges, count_wedges_in, measure, measure_in, share_holding_half, Measurement,
+    WedgeCounts,
+};

@@ -1,5 +1,6 @@
 //! Models normalized into the unit cube, as [LZT §6] does before Tables 1-2: "all the models
-//! ... are normalized in a 1.0 x 1.0 x 1.0 cube", so that edge lengths compare across models.
+//! ... are normalized in a 1.0 x 1.0 x 1.0 cube", so that edge lengths compare across models;
+//! and models scaled uniformly, to test whether anything depends on the scale (Observation 3).
 
 use super::ExperimentError;
 use crate::TriMesh;
@@ -42,6 +43,33 @@ pub fn normalize_to_unit_cube(mesh: &TriMesh) -> Result<TriMesh, ExperimentError
         .positions()
         .iter()
         .map(|p| std::array::from_fn(|k| (p[k] - lo[k]) / side))
+        .collect();
+    Ok(TriMesh::new(positions, mesh.faces().to_vec())?)
+}
+
+/// The mesh with every coordinate multiplied by `factor` (rounded to the nearest `f64`, so the
+/// scaled mesh is exact when `factor` is a power of two): the same surface in other units.
+/// Faces and vertex order are kept.
+///
+/// # Errors
+/// [`ExperimentError::Scale`] unless `factor` is finite and positive;
+/// [`ExperimentError::Mesh`] if the scaled coordinates overflow.
+///
+/// # Example
+/// ```
+/// use exact_geodesics::{experiments::scale_uniformly, mesh::shapes};
+/// let big = scale_uniformly(&shapes::cube(), 1e6)?;
+/// assert_eq!(big.positions()[6], [1e6, 1e6, 1e6]);
+/// # Ok::<(), exact_geodesics::experiments::ExperimentError>(())
+/// ```
+pub fn scale_uniformly(mesh: &TriMesh, factor: f64) -> Result<TriMesh, ExperimentError> {
+    if !(factor.is_finite() && factor > 0.0) {
+        return Err(ExperimentError::Scale { factor });
+    }
+    let positions = mesh
+        .positions()
+        .iter()
+        .map(|p| p.map(|c| c * factor))
         .collect();
     Ok(TriMesh::new(positions, mesh.faces().to_vec())?)
 }

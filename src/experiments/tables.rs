@@ -199,7 +199,7 @@ edge_length_max,edge_length_min,wedges_per_unit_length,wedges_mean,edges";
 }
 
 /// A CSV field: quoted (with doubled quotes) when it holds a comma, quote or line break.
-fn csv_field(text: &str) -> String {
+pub(super) fn csv_field(text: &str) -> String {
     if text.contains([',', '"', '\n', '\r']) {
         format!("\"{}\"", text.replace('"', "\"\""))
     } else {

@@ -2,7 +2,7 @@
 //! edges of a model [LZT §6, Table 1].
 
 use super::{ExperimentError, Summary};
-use crate::mmp::Progress;
+use crate::mmp::{Eq2Counts, Progress};
 use crate::scalar::{Adaptive, Backend, Real};
 use crate::{propagate_with_progress, PropagateOptions, Scalar, SurfacePoint, TriMesh, VertexId};
 use serde::Serialize;
@@ -48,21 +48,66 @@ pub fn count_wedges<S: Scalar>(
     source: VertexId,
     progress: impl FnMut(&Progress),
 ) -> Result<WedgeCounts, ExperimentError> {
+    Ok(measure::<S>(mesh, source, progress)?.counts)
+}
+
+/// What the experiments read of one propagation from a source vertex: w(e) and its summary,
+/// the cases of eq. (2) met [LZT Property 1], and the vertex distances.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Measurement {
+    /// w(e) summarized, as Table 1 reports it.
+    pub counts: WedgeCounts,
+    /// w(e) on every edge, indexed by `EdgeId` (the distribution behind `counts`).
+    pub per_edge: Vec<usize>,
+    /// How often eq. (2) had zero, one, two or infinitely many solutions.
+    pub eq2: Eq2Counts,
+    /// The distance of every vertex in the model's units (`f64::INFINITY` where unreachable).
+    pub distances: Vec<f64>,
+    /// Decisions the exact backend could not certify within its precision cap (always 0 in
+    /// the float backends): where this is not 0, the run is not exact.
+    pub uncertified: u64,
+}
+
+/// Propagates from `source` in the number type `S` and reads the [`Measurement`]; `progress`
+/// is called as in [`propagate_with_progress`].
+///
+/// # Errors
+/// [`ExperimentError::Source`] if `source` is not a vertex of `mesh`.
+///
+/// # Example
+/// ```
+/// use exact_geodesics::{experiments::measure, mesh::shapes, VertexId};
+/// let m = measure::<f64>(&shapes::cube(), VertexId(0), |_| {})?;
+/// assert_eq!(m.per_edge.iter().sum::<usize>(), m.counts.total);
+/// assert_eq!(m.distances[0], 0.0);
+/// # Ok::<(), exact_geodesics::experiments::ExperimentError>(())
+/// ```
+pub fn measure<S: Scalar>(
+    mesh: &TriMesh,
+    source: VertexId,
+    progress: impl FnMut(&Progress),
+) -> Result<Measurement, ExperimentError> {
     let field = propagate_with_progress::<S>(
         mesh,
         &[SurfacePoint::Vertex(source)],
         &PropagateOptions::default(),
         progress,
     )?;
-    let counts = field.wedge_counts();
-    let samples: Vec<f64> = counts.iter().map(|&c| c as f64).collect();
-    Ok(WedgeCounts {
-        source,
-        per_edge: Summary::of(&samples).expect("a TriMesh has at least one face, so edges"),
-        total: counts.iter().sum(),
-        edges_without_wedges: counts.iter().filter(|&&c| c == 0).count(),
-        edges_holding_half: share_holding_half(&counts),
-        seconds: field.stats().propagation_seconds,
+    let per_edge = field.wedge_counts();
+    let samples: Vec<f64> = per_edge.iter().map(|&c| c as f64).collect();
+    Ok(Measurement {
+        counts: WedgeCounts {
+            source,
+            per_edge: Summary::of(&samples).expect("a TriMesh has at least one face, so edges"),
+            total: per_edge.iter().sum(),
+            edges_without_wedges: per_edge.iter().filter(|&&c| c == 0).count(),
+            edges_holding_half: share_holding_half(&per_edge),
+            seconds: field.stats().propagation_seconds,
+        },
+        eq2: field.stats().eq2.clone(),
+        distances: field.vertex_distances(),
+        uncertified: field.stats().backend.uncertified,
+        per_edge,
     })
 }
 
@@ -118,9 +163,23 @@ pub fn count_wedges_in(
     source: VertexId,
     progress: impl FnMut(&Progress),
 ) -> Result<WedgeCounts, ExperimentError> {
+    Ok(measure_in(backend, mesh, source, progress)?.counts)
+}
+
+/// [`measure`] in the backend named at run time (the exact backend with the precision cap set
+/// by `scalar::exact::set_precision_cap`).
+///
+/// # Errors
+/// As [`measure`].
+pub fn measure_in(
+    backend: Backend,
+    mesh: &TriMesh,
+    source: VertexId,
+    progress: impl FnMut(&Progress),
+) -> Result<Measurement, ExperimentError> {
     match backend {
-        Backend::F64 => count_wedges::<f64>(mesh, source, progress),
-        Backend::Adaptive => count_wedges::<Adaptive>(mesh, source, progress),
-        Backend::Exact => count_wedges::<Real>(mesh, source, progress),
+        Backend::F64 => measure::<f64>(mesh, source, progress),
+        Backend::Adaptive => measure::<Adaptive>(mesh, source, progress),
+        Backend::Exact => measure::<Real>(mesh, source, progress),
     }
 }

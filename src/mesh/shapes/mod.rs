@@ -296,26 +296,55 @@ pub fn icosphere(subdivisions: u32) -> TriMesh {
     };
     let mut positions: Vec<[f64; 3]> = positions.into_iter().map(normalise).collect();
     for _ in 0..subdivisions {
-        let mut midpoint = std::collections::HashMap::new();
-        let mut mid = |a: u32, b: u32, positions: &mut Vec<[f64; 3]>| {
-            *midpoint.entry((a.min(b), a.max(b))).or_insert_with(|| {
-                let (p, q) = (positions[a as usize], positions[b as usize]);
-                positions.push(normalise([p[0] + q[0], p[1] + q[1], p[2] + q[2]]));
-                (positions.len() - 1) as u32
-            })
-        };
-        let mut next = Vec::with_capacity(4 * faces.len());
-        for [a, b, c] in faces {
-            let (ab, bc, ca) = (
-                mid(a, b, &mut positions),
-                mid(b, c, &mut positions),
-                mid(c, a, &mut positions),
-            );
-            next.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
-        }
-        faces = next;
+        faces = split_in_four(&mut positions, &faces, |p, q| {
+            normalise([p[0] + q[0], p[1] + q[1], p[2] + q[2]])
+        });
     }
     build(positions, faces)
+}
+
+/// The mesh with every face split into four at the midpoints of its edges (one new vertex per
+/// edge, shared by its faces): the same surface with half the edge length. The new vertices
+/// follow the old ones; faces and vertices no face uses are kept in order.
+///
+/// # Example
+/// ```
+/// use exact_geodesics::mesh::shapes::{cube, subdivide};
+/// let fine = subdivide(&cube());
+/// assert_eq!((fine.vertex_count(), fine.face_count()), (8 + 18, 48));
+/// ```
+pub fn subdivide(mesh: &TriMesh) -> TriMesh {
+    let mut positions = mesh.positions().to_vec();
+    let faces = split_in_four(&mut positions, mesh.faces(), |p, q| {
+        std::array::from_fn(|k| 0.5 * p[k] + 0.5 * q[k])
+    });
+    build(positions, faces)
+}
+
+/// Splits every face `[a, b, c]` into four at new vertices `between(p, q)` on its edges, one
+/// per edge, appended to `positions`.
+fn split_in_four(
+    positions: &mut Vec<[f64; 3]>,
+    faces: &[[u32; 3]],
+    between: impl Fn([f64; 3], [f64; 3]) -> [f64; 3],
+) -> Vec<[u32; 3]> {
+    let mut midpoint = std::collections::HashMap::new();
+    let mut mid = |a: u32, b: u32, positions: &mut Vec<[f64; 3]>| {
+        *midpoint.entry((a.min(b), a.max(b))).or_insert_with(|| {
+            positions.push(between(positions[a as usize], positions[b as usize]));
+            (positions.len() - 1) as u32
+        })
+    };
+    let mut next = Vec::with_capacity(4 * faces.len());
+    for &[a, b, c] in faces {
+        let (ab, bc, ca) = (
+            mid(a, b, positions),
+            mid(b, c, positions),
+            mid(c, a, positions),
+        );
+        next.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
+    }
+    next
 }
 
 /// The mesh of Example 1 [LZT §3]: a triangular prism over the right triangle `v1 v2 v3`
