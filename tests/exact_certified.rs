@@ -93,6 +93,37 @@ fn uncertified_decisions_are_warned_of_and_refused_on_demand() {
     assert!(String::from_utf8_lossy(&full.stderr).is_empty());
 }
 
+/// Uncertified decisions of the exact backend on [`FOLD`] with the given precision cap.
+fn fold_uncertified(cap: u32) -> u64 {
+    use exact_geodesics::mesh::io::{read_from, MeshFormat, ReadOptions};
+    let mesh = read_from(
+        FOLD.as_bytes(),
+        MeshFormat::Obj,
+        "fold",
+        &ReadOptions::default(),
+    )
+    .expect("the fold is a mesh");
+    let options = PropagateOptions::default().with_precision_cap(cap);
+    let source = [SurfacePoint::Vertex(VertexId(0))];
+    let field = propagate::<Real>(&mesh, &source, &options).expect("a vertex source");
+    field.stats().backend.uncertified
+}
+
+#[test]
+fn each_run_has_its_own_precision_cap_and_counters() {
+    let low = fold_uncertified(128);
+    assert!(low > 0, "2^-150 is beyond 128 bits");
+    assert_eq!(fold_uncertified(8192), 0);
+    assert_eq!(fold_uncertified(128), low, "the counters are the run's own");
+    // Runs on two threads at once, each with its cap.
+    let (a, b) = std::thread::scope(|s| {
+        let a = s.spawn(|| fold_uncertified(128));
+        let b = s.spawn(|| fold_uncertified(8192));
+        (a.join().expect("a run"), b.join().expect("a run"))
+    });
+    assert_eq!((a, b), (low, 0));
+}
+
 /// `sqrt 5`, the distance across two faces of the unit cube to the opposite corner, to 60
 /// significant digits (correctly rounded by Python's `decimal` at 80 digits).
 const ROOT_5: &str = "2.23606797749978969640917366873127623544061835961152572427090";

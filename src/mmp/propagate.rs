@@ -22,12 +22,27 @@ pub struct PropagateOptions {
     /// Keep a log of every meeting of two wedges on an edge ([`Stats::decisions`]), for
     /// comparing backends decision by decision.
     pub record_decisions: bool,
+    /// The exact backend's precision cap for this run, in bits (clamped into
+    /// [`MIN_PRECISION_CAP`](crate::scalar::exact::MIN_PRECISION_CAP)`..=`
+    /// [`MAX_PRECISION_CAP`](crate::scalar::exact::MAX_PRECISION_CAP)); it stays the running
+    /// thread's cap after the run, for queries. `None` keeps the thread's cap
+    /// ([`set_precision_cap`](crate::scalar::exact::set_precision_cap), by default
+    /// [`DEFAULT_PRECISION_CAP`](crate::scalar::exact::DEFAULT_PRECISION_CAP)). Other backends
+    /// ignore it.
+    pub precision_cap: Option<u32>,
 }
 
 impl PropagateOptions {
     /// Stops the propagation at the given distance.
     pub fn with_max_distance(mut self, d: f64) -> Self {
         self.max_distance = Some(d);
+        self
+    }
+
+    /// Sets the exact backend's precision cap for the run (see
+    /// [`precision_cap`](Self::precision_cap)).
+    pub fn with_precision_cap(mut self, bits: u32) -> Self {
+        self.precision_cap = Some(bits);
         self
     }
 }
@@ -87,6 +102,7 @@ pub fn propagate_with_progress<'m, S: Scalar>(
         .map(|p| p.validated(mesh))
         .collect::<Result<Vec<_>, _>>()?;
     let started = Instant::now();
+    S::begin_run(options.precision_cap);
     S::take_counts();
     let mut engine = Engine::new(mesh, options);
     for (k, point) in sources.iter().enumerate() {

@@ -201,6 +201,11 @@ pub trait Scalar: Field {
     /// when `r` lies to the left of the line from `p` to `q`.
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign;
 
+    /// Starts a propagation on this thread: a backend with a precision cap takes
+    /// `precision_cap` as this thread's (if given), and resets what belongs to one run.
+    #[inline(always)]
+    fn begin_run(_precision_cap: Option<u32>) {}
+
     /// Tells the backend where the engine's next decisions are taken, so that a decision it
     /// cannot certify is reported with its place.
     #[inline(always)]

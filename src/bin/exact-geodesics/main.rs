@@ -188,13 +188,13 @@ impl Common {
             .iter()
             .map(|s| spec::parse_point(&mesh, &self.mesh, s))
             .collect::<Result<Vec<_>, _>>()?;
-        exact::set_precision_cap(self.precision_cap).map_err(|e| e.to_string())?;
         Ok(Job {
             mesh,
             sources,
             options: PropagateOptions {
                 max_distance: self.max_distance,
                 record_decisions: false,
+                precision_cap: Some(self.precision_cap),
             },
             backend: self.backend,
             require_certified: self.require_certified,

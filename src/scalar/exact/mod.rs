@@ -10,7 +10,8 @@
 //!    rational evaluation, by a zero normal form in a tower of quadratic extensions, or when
 //!    the enclosure is smaller than the BFMSS separation bound \[BFMSS01\] (a non-zero value
 //!    cannot be that small);
-//! 4. a decision that reaches the precision cap ([`set_precision_cap`]) without either is
+//! 4. a decision that reaches the precision cap (this thread's: [`set_precision_cap`], or the
+//!    run's: [`PropagateOptions::precision_cap`](crate::PropagateOptions)) without either is
 //!    *uncertified*: the value is then within `2^-cap` of zero, it is treated as zero (a tie),
 //!    and it is recorded with its place, never passed off as exact.
 //!
@@ -36,10 +37,10 @@ use super::roots::{self, CertifiedSign};
 use super::{BisectorRoots, Field, Interval, Ring, Scalar, Sign, SourceDistance};
 use node::{DivisorCheck, Node, Op};
 use rug::{Float, Rational};
+use std::cell::Cell;
 use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
-use std::sync::atomic::{AtomicU32, Ordering as AtomicOrdering};
 use std::sync::Arc;
 use thiserror::Error;
 
@@ -57,7 +58,10 @@ pub const MIN_PRECISION_CAP: u32 = FIRST_PRECISION;
 /// decision already costs 256 KiB per node; a larger cap would exhaust memory before it helped.
 pub const MAX_PRECISION_CAP: u32 = 1 << 20;
 
-static PRECISION_CAP: AtomicU32 = AtomicU32::new(DEFAULT_PRECISION_CAP);
+thread_local! {
+    /// This thread's precision cap: each thread (each propagation) has its own.
+    static PRECISION_CAP: Cell<u32> = const { Cell::new(DEFAULT_PRECISION_CAP) };
+}
 
 /// A precision cap outside [`MIN_PRECISION_CAP`]`..=`[`MAX_PRECISION_CAP`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Error)]
@@ -67,8 +71,9 @@ pub struct PrecisionCapError {
     pub bits: u32,
 }
 
-/// Sets the largest precision, in bits, at which a sign is sought before the decision is
-/// recorded as uncertified. Applies to every thread.
+/// Sets the largest precision, in bits, at which this thread seeks a sign before the decision
+/// is recorded as uncertified (other threads keep theirs). A propagation sets it from its
+/// options ([`PropagateOptions::precision_cap`](crate::PropagateOptions)) when they give one.
 ///
 /// # Errors
 /// [`PrecisionCapError`] if `bits` is below [`MIN_PRECISION_CAP`] or above
@@ -87,13 +92,13 @@ pub fn set_precision_cap(bits: u32) -> Result<(), PrecisionCapError> {
     if !(MIN_PRECISION_CAP..=MAX_PRECISION_CAP).contains(&bits) {
         return Err(PrecisionCapError { bits });
     }
-    PRECISION_CAP.store(bits, AtomicOrdering::Relaxed);
+    PRECISION_CAP.set(bits);
     Ok(())
 }
 
-/// The current precision cap, in bits.
+/// This thread's precision cap, in bits.
 pub fn precision_cap() -> u32 {
-    PRECISION_CAP.load(AtomicOrdering::Relaxed)
+    PRECISION_CAP.get()
 }
 
 /// An exact real number: an expression DAG over rationals with `+ - * /` and `sqrt`.
@@ -470,6 +475,15 @@ impl Scalar for Real {
         let cross = (q[0].clone() - p[0]) * &(r[1].clone() - p[1])
             - (q[1].clone() - p[1]) * &(r[0].clone() - p[0]);
         cross.decide()
+    }
+
+    /// The run's cap (clamped into `MIN_PRECISION_CAP..=MAX_PRECISION_CAP`) becomes this
+    /// thread's, and the run starts a tower of radicals of its own.
+    fn begin_run(precision_cap: Option<u32>) {
+        if let Some(bits) = precision_cap {
+            PRECISION_CAP.set(bits.clamp(MIN_PRECISION_CAP, MAX_PRECISION_CAP));
+        }
+        normal_form::new_tower();
     }
 
     fn locate(site: Site) {

@@ -63,7 +63,8 @@ pub(crate) struct Node {
     /// The outcome of checking those divisors, once known.
     pub(crate) divisors_checked: OnceLock<DivisorCheck>,
     pub(crate) cache: Mutex<Option<Enclosure>>,
-    pub(crate) normal_form: OnceLock<Option<NormalForm>>,
+    /// The normal form, with the id of the tower it is written in (see `normal_form.rs`).
+    pub(crate) normal_form: Mutex<Option<(u64, Option<NormalForm>)>>,
     /// A hash of the expression: equal for equal expressions, whichever nodes hold them.
     hash: u64,
     /// Whether the node is zero by its structure (`x - x` or `0 * x` of an expression `x`),
@@ -137,7 +138,7 @@ impl Node {
             divisors_checked: OnceLock::new(),
             op: Op::Leaf(r),
             cache: Mutex::new(None),
-            normal_form: OnceLock::new(),
+            normal_form: Mutex::new(None),
         })
     }
 
@@ -171,7 +172,7 @@ impl Node {
             divisors_unchecked,
             divisors_checked: OnceLock::new(),
             cache: Mutex::new(None),
-            normal_form: OnceLock::new(),
+            normal_form: Mutex::new(None),
         })
     }
 

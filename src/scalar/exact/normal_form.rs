@@ -15,8 +15,10 @@
 
 use super::node::{Node, Op};
 use rug::{Integer, Rational};
+use std::cell::RefCell;
 use std::collections::{BTreeMap, HashMap};
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Arc;
 
 /// Normal forms with more terms than this are abandoned.
 const MAX_TERMS: usize = 256;
@@ -34,7 +36,14 @@ const WORK_PER_TEST: usize = 50_000;
 
 thread_local! {
     static WORK_LEFT: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+    /// This thread's tower: a propagation starts a new one ([`new_tower`]), so that its symbols
+    /// neither pile up from run to run nor are shared (and locked) between threads.
+    static TOWER: RefCell<Tower> = RefCell::new(Tower::new());
 }
+
+/// Ids of towers, unique in the process: a normal form memoized on a node is valid only in the
+/// tower it was computed in.
+static NEXT_TOWER: AtomicU64 = AtomicU64::new(0);
 
 /// A product of distinct symbols, in increasing order.
 type Monomial = Vec<u32>;
@@ -44,24 +53,35 @@ type Monomial = Vec<u32>;
 pub(crate) struct NormalForm(BTreeMap<Monomial, Rational>);
 
 struct Tower {
+    id: u64,
     squares: Vec<NormalForm>,
     integer_radicals: HashMap<Integer, u32>,
     radicals: HashMap<NormalForm, u32>,
 }
 
-fn tower() -> &'static Mutex<Tower> {
-    static TOWER: OnceLock<Mutex<Tower>> = OnceLock::new();
-    TOWER.get_or_init(|| {
-        Mutex::new(Tower {
+impl Tower {
+    fn new() -> Tower {
+        Tower {
+            id: NEXT_TOWER.fetch_add(1, Ordering::Relaxed),
             squares: Vec::new(),
             integer_radicals: HashMap::new(),
             radicals: HashMap::new(),
-        })
-    })
+        }
+    }
+}
+
+/// Replaces this thread's tower by an empty one; normal forms memoized in the old one are
+/// computed again when asked for.
+pub(crate) fn new_tower() {
+    TOWER.with(|t| *t.borrow_mut() = Tower::new());
+}
+
+fn tower_id() -> u64 {
+    TOWER.with(|t| t.borrow().id)
 }
 
 fn square_of(symbol: u32) -> NormalForm {
-    tower().lock().expect("tower lock").squares[symbol as usize].clone()
+    TOWER.with(|t| t.borrow().squares[symbol as usize].clone())
 }
 
 impl NormalForm {
@@ -214,16 +234,18 @@ impl NormalForm {
         if let Some(r) = self.as_rational() {
             return Some(sqrt_of_rational(&r));
         }
-        let mut t = tower().lock().expect("tower lock");
-        let id = match t.radicals.get(self) {
-            Some(&id) => id,
-            None => {
-                let id = t.squares.len() as u32;
-                t.squares.push(self.clone());
-                t.radicals.insert(self.clone(), id);
-                id
+        let id = TOWER.with(|t| {
+            let mut t = t.borrow_mut();
+            match t.radicals.get(self) {
+                Some(&id) => id,
+                None => {
+                    let id = t.squares.len() as u32;
+                    t.squares.push(self.clone());
+                    t.radicals.insert(self.clone(), id);
+                    id
+                }
             }
-        };
+        });
         Some(NormalForm::monomial(Rational::from(1), vec![id]))
     }
 }
@@ -247,17 +269,19 @@ fn sqrt_of_rational(r: &Rational) -> NormalForm {
         f *= m.sqrt();
         return NormalForm::rational(Rational::from((f, r.denom().clone())));
     }
-    let mut t = tower().lock().expect("tower lock");
-    let id = match t.integer_radicals.get(&m) {
-        Some(&id) => id,
-        None => {
-            let id = t.squares.len() as u32;
-            t.squares
-                .push(NormalForm::rational(Rational::from(m.clone())));
-            t.integer_radicals.insert(m, id);
-            id
+    let id = TOWER.with(|t| {
+        let mut t = t.borrow_mut();
+        match t.integer_radicals.get(&m) {
+            Some(&id) => id,
+            None => {
+                let id = t.squares.len() as u32;
+                t.squares
+                    .push(NormalForm::rational(Rational::from(m.clone())));
+                t.integer_radicals.insert(m, id);
+                id
+            }
         }
-    };
+    });
     NormalForm::monomial(Rational::from((f, r.denom().clone())), vec![id])
 }
 
@@ -268,8 +292,17 @@ pub(crate) fn normal_form(node: &Arc<Node>) -> Option<NormalForm> {
     memoized(node)
 }
 
+/// The node's normal form in this thread's tower, memoized on the node with the tower's id.
 fn memoized(node: &Arc<Node>) -> Option<NormalForm> {
-    node.normal_form.get_or_init(|| compute(node)).clone()
+    let tower = tower_id();
+    if let Some((id, nf)) = node.normal_form.lock().expect("memo lock").as_ref() {
+        if *id == tower {
+            return nf.clone();
+        }
+    }
+    let nf = compute(node);
+    *node.normal_form.lock().expect("memo lock") = Some((tower, nf.clone()));
+    nf
 }
 
 fn compute(node: &Arc<Node>) -> Option<NormalForm> {
