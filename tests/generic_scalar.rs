@@ -65,11 +65,11 @@ impl Field for CloneOnly {
 
 impl Scalar for CloneOnly {
     // Keeps its values, as an exact type does: the engine's kept-value paths run on `f64`.
-    type Kept = Option<CloneOnly>;
-    fn keep(make: impl FnOnce() -> Self) -> Self::Kept {
+    type Kept<T: Clone + std::fmt::Debug> = Option<T>;
+    fn keep<T: Clone + std::fmt::Debug>(make: impl FnOnce() -> T) -> Self::Kept<T> {
         Some(make())
     }
-    fn kept(kept: &Self::Kept) -> Option<Self> {
+    fn kept<T: Clone + std::fmt::Debug>(kept: &Self::Kept<T>) -> Option<T> {
         kept.clone()
     }
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign {

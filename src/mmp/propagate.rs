@@ -123,7 +123,7 @@ type Child<S> = (EdgeId, S, S, Planar<S>, EndValues<S>);
 /// types that keep values ([`Scalar::Kept`]): every wedge born of one construction across a
 /// face, and all their descendants that keep a vertex of it as an end of their edge, give that
 /// vertex the very same value, so an exact backend sees their ties by structure.
-pub(crate) type EndValues<S> = [<S as Scalar>::Kept; 2];
+pub(crate) type EndValues<S> = [<S as Scalar>::Kept<S>; 2];
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum SlotState {

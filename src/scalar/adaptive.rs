@@ -188,13 +188,13 @@ fn cmp(a: f64, b: f64) -> Ordering {
 }
 
 impl Scalar for Adaptive {
-    type Kept = ();
+    type Kept<T: Clone + std::fmt::Debug> = ();
 
     #[inline(always)]
-    fn keep(_make: impl FnOnce() -> Self) -> Self::Kept {}
+    fn keep<T: Clone + std::fmt::Debug>(_make: impl FnOnce() -> T) -> Self::Kept<T> {}
 
     #[inline(always)]
-    fn kept(_kept: &Self::Kept) -> Option<Self> {
+    fn kept<T: Clone + std::fmt::Debug>(_kept: &Self::Kept<T>) -> Option<T> {
         None
     }
 

@@ -51,13 +51,13 @@ impl Field for f64 {
 }
 
 impl Scalar for f64 {
-    type Kept = ();
+    type Kept<T: Clone + std::fmt::Debug> = ();
 
     #[inline(always)]
-    fn keep(_make: impl FnOnce() -> Self) -> Self::Kept {}
+    fn keep<T: Clone + std::fmt::Debug>(_make: impl FnOnce() -> T) -> Self::Kept<T> {}
 
     #[inline(always)]
-    fn kept(_kept: &Self::Kept) -> Option<Self> {
+    fn kept<T: Clone + std::fmt::Debug>(_kept: &Self::Kept<T>) -> Option<T> {
         None
     }
 

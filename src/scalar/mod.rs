@@ -141,14 +141,14 @@ pub trait Scalar: Field {
     /// value itself for expression types, whose identities the engine's constructions then
     /// show by structure (a wedge's distance at a vertex, derived again by a descendant of the
     /// wedge that lit the vertex, is one and the same expression).
-    type Kept: Clone + Default + std::fmt::Debug;
+    type Kept<T: Clone + std::fmt::Debug>: Clone + Default + std::fmt::Debug;
 
     /// Keeps the value `make` builds, if this number type keeps values (`make` is not called
     /// otherwise).
-    fn keep(make: impl FnOnce() -> Self) -> Self::Kept;
+    fn keep<T: Clone + std::fmt::Debug>(make: impl FnOnce() -> T) -> Self::Kept<T>;
 
     /// The kept value, if this number type keeps values.
-    fn kept(kept: &Self::Kept) -> Option<Self>;
+    fn kept<T: Clone + std::fmt::Debug>(kept: &Self::Kept<T>) -> Option<T>;
 
     /// The sign of `self`.
     fn sign(&self) -> Sign;

@@ -400,13 +400,13 @@ impl CertifiedSign for Real {
 }
 
 impl Scalar for Real {
-    type Kept = Option<Real>;
+    type Kept<T: Clone + std::fmt::Debug> = Option<T>;
 
-    fn keep(make: impl FnOnce() -> Self) -> Self::Kept {
+    fn keep<T: Clone + std::fmt::Debug>(make: impl FnOnce() -> T) -> Self::Kept<T> {
         Some(make())
     }
 
-    fn kept(kept: &Self::Kept) -> Option<Self> {
+    fn kept<T: Clone + std::fmt::Debug>(kept: &Self::Kept<T>) -> Option<T> {
         kept.clone()
     }
 
