@@ -184,13 +184,35 @@ fn nan_coordinate_names_the_line() {
 }
 
 #[test]
-fn non_manifold_edge_is_refused() {
+fn non_manifold_edge_is_named_in_a_warning_and_refused_when_strict() {
     let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
     let path = temp_file("fin.obj", obj);
-    fails_with(
-        &["distance", path.to_str().expect("UTF-8"), "--source", "v:0"],
-        "fin.obj:",
+    let p = path.to_str().expect("UTF-8");
+    let out = run(&["distance", p, "--source", "v:2"]);
+    let warnings = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(
+        warnings.contains("1 edge(s) shared by more than two faces: (0, 1) with 3 faces"),
+        "{warnings}"
     );
+    // Three right isosceles pages with legs 1 along the spine (0, 1); unfolded flat, vertices
+    // 3 and 4 lie at (0, -1) and vertex 2 at (0, 1): 2 apart, through vertex 0.
+    let text = stdout(&out);
+    let d: Vec<f64> = text
+        .lines()
+        .skip(1)
+        .map(|l| {
+            l.split(',')
+                .nth(1)
+                .expect("distance")
+                .parse()
+                .expect("number")
+        })
+        .collect();
+    let root2 = 2f64.sqrt();
+    for (got, want) in d.iter().zip([1.0, root2, 0.0, 2.0, 2.0]) {
+        assert!((got - want).abs() < 1e-12, "{text}");
+    }
+    fails_with(&["distance", p, "--source", "v:0", "--strict"], "fin.obj:8");
 }
 
 #[test]

@@ -52,9 +52,8 @@ struct TableArgs {
             .range(i64::from(exact::MIN_PRECISION_CAP)..=i64::from(exact::MAX_PRECISION_CAP))
     )]
     precision_cap: u32,
-    /// Split polygons with more than three corners into triangles instead of refusing them.
-    #[arg(long)]
-    triangulate: bool,
+    #[command(flatten)]
+    read: load::ReadArgs,
     /// Directory to write the table into (created if missing).
     #[arg(long)]
     out: PathBuf,
@@ -93,7 +92,7 @@ fn write_table<R: Serialize>(
     let mut csv = format!("{header}\n");
     let mut rows = Vec::new();
     for spec in &args.meshes {
-        let mesh = load::load_mesh(spec, args.triangulate)?;
+        let mesh = load::load_mesh(spec, &args.read.options())?;
         let unit = normalize_to_unit_cube(&mesh).map_err(|e| format!("{spec}: {e}"))?;
         let shape = ModelShape::of(&unit);
         for &backend in &args.backend {
