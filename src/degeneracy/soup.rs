@@ -203,7 +203,7 @@ impl Soup {
     /// The mesh.
     pub(crate) fn into_mesh(self) -> TriMesh {
         TriMesh::new(self.positions, self.faces)
-            .expect("the surgery keeps edges in at most two faces and corners distinct")
+            .expect("the surgery keeps the corners of every face distinct")
     }
 }
 

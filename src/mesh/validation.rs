@@ -55,7 +55,7 @@ pub struct ValidationReport {
     pub non_manifold_edges: Vec<NonManifoldEdge>,
     /// Faces that repeat an earlier face's corners, in face order.
     pub duplicate_faces: Vec<DuplicateFace>,
-    /// Edges whose two faces traverse them in the same direction (inconsistent orientation).
+    /// Edges whose first two faces traverse them in the same direction (inconsistent orientation).
     /// The engine does not need a consistent orientation; writers keep the input order.
     pub inconsistently_oriented_edges: usize,
     /// Number of edges with a single face.
