@@ -184,13 +184,68 @@ fn nan_coordinate_names_the_line() {
 }
 
 #[test]
-fn non_manifold_edge_is_refused() {
+fn non_manifold_edge_is_named_in_a_warning_and_refused_when_strict() {
     let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
     let path = temp_file("fin.obj", obj);
-    fails_with(
-        &["distance", path.to_str().expect("UTF-8"), "--source", "v:0"],
-        "fin.obj:",
+    let p = path.to_str().expect("UTF-8");
+    let out = run(&["distance", p, "--source", "v:2"]);
+    let warnings = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(
+        warnings.contains("1 edge(s) shared by more than two faces: (0, 1) with 3 faces"),
+        "{warnings}"
     );
+    // Three right isosceles pages with legs 1 along the spine (0, 1); unfolded flat, vertices
+    // 3 and 4 lie at (0, -1) and vertex 2 at (0, 1): 2 apart, through vertex 0.
+    let text = stdout(&out);
+    let d: Vec<f64> = text
+        .lines()
+        .skip(1)
+        .map(|l| {
+            l.split(',')
+                .nth(1)
+                .expect("distance")
+                .parse()
+                .expect("number")
+        })
+        .collect();
+    let root2 = 2f64.sqrt();
+    for (got, want) in d.iter().zip([1.0, root2, 0.0, 2.0, 2.0]) {
+        assert!((got - want).abs() < 1e-12, "{text}");
+    }
+    fails_with(&["distance", p, "--source", "v:0", "--strict"], "fin.obj:8");
+}
+
+#[test]
+fn path_and_stats_cross_a_non_manifold_edge() {
+    let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
+    let path = temp_file("fin-path.obj", obj);
+    let p = path.to_str().expect("UTF-8");
+    // The point (0.6, 0, 0.2) of the standing page, turned flat, is (0.6, -0.2): the straight
+    // line from vertex 2 at (0, 1) crosses the spine at x = 0.5, sqrt(1.8) long.
+    let text = stdout(&run(&[
+        "path",
+        p,
+        "--source",
+        "v:2",
+        "--target",
+        "f:2,0.2,0.6,0.2",
+        "--format",
+        "csv",
+    ]));
+    let rows: Vec<&str> = text.lines().skip(1).collect();
+    assert_eq!(rows.len(), 3, "{text}");
+    let crossing: Vec<f64> = rows[1]
+        .split(',')
+        .skip(1)
+        .take(3)
+        .map(|c| c.parse().expect("number"))
+        .collect();
+    for (got, want) in crossing.iter().zip([0.5, 0.0, 0.0]) {
+        assert!((got - want).abs() < 1e-12, "{text}");
+    }
+    let stats: serde_json::Value =
+        serde_json::from_str(&stdout(&run(&["stats", p, "--source", "v:2"]))).expect("JSON");
+    assert_eq!(stats["coverage"]["gaps_and_overlaps"], 0, "{stats}");
 }
 
 #[test]

@@ -51,11 +51,12 @@ fn out_of_range_and_repeated_indices_are_refused() {
 }
 
 #[test]
-fn non_manifold_edges_are_refused() {
+fn non_manifold_edges_are_refused_only_by_the_strict_check() {
     let mut p = triangle();
     p.extend([[0.0, -1.0, 0.0], [0.0, 0.0, 1.0]]);
-    let err =
-        TriMesh::new(p, vec![[0, 1, 2], [1, 0, 3], [0, 1, 4]]).expect_err("three faces on 0-1");
+    let mesh = TriMesh::new(p, vec![[0, 1, 2], [1, 0, 3], [0, 1, 4]])
+        .expect("three faces on 0-1 are usable");
+    let err = mesh.require_manifold().expect_err("three faces on 0-1");
     assert!(
         matches!(
             err,
@@ -67,6 +68,20 @@ fn non_manifold_edges_are_refused() {
             }
         ),
         "{err}"
+    );
+}
+
+#[test]
+fn duplicate_faces_are_refused_only_by_the_strict_check() {
+    let mut p = triangle();
+    p.push([1.0, 1.0, 0.0]);
+    let mesh = TriMesh::new(p, vec![[0, 1, 2], [1, 3, 2], [2, 1, 0]]).expect("a copy is usable");
+    assert_eq!(
+        mesh.require_manifold(),
+        Err(MeshError::DuplicateFace {
+            face: 2,
+            copy_of: 0
+        })
     );
 }
 

@@ -18,7 +18,10 @@ fn read_triangulated(text: impl AsRef<[u8]>, format: MeshFormat) -> Result<TriMe
         text.as_ref(),
         format,
         "m",
-        &ReadOptions { triangulate: true },
+        &ReadOptions {
+            triangulate: true,
+            ..ReadOptions::default()
+        },
     )
 }
 
@@ -474,13 +477,29 @@ fn non_finite_coordinates_name_their_line() {
 }
 
 #[test]
-fn a_third_face_on_an_edge_is_named_at_its_line() {
+fn a_third_face_on_an_edge_is_read_and_named_at_its_line_when_strict() {
     let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
-    let (line, source) = line_of(read(obj, MeshFormat::Obj));
+    let mesh = read(obj, MeshFormat::Obj).expect("a non-manifold edge is usable");
+    assert_eq!(mesh.validation().non_manifold_edges.len(), 1);
+    let strict = ReadOptions {
+        strict: true,
+        ..ReadOptions::default()
+    };
+    let (line, source) = line_of(read_from(obj.as_bytes(), MeshFormat::Obj, "m", &strict));
     assert_eq!(line, Some(8));
     assert!(matches!(
         source,
         MeshError::NonManifoldEdge { face_count: 3, .. }
+    ));
+    let copy = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 3 2 1\n";
+    let (line, source) = line_of(read_from(copy.as_bytes(), MeshFormat::Obj, "m", &strict));
+    assert_eq!(line, Some(5));
+    assert!(matches!(
+        source,
+        MeshError::DuplicateFace {
+            face: 1,
+            copy_of: 0
+        }
     ));
 }
 

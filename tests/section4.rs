@@ -16,7 +16,7 @@ fn wedge<S: Scalar>(id: usize, (b0, b1): (f64, f64), (x, y, sigma): (f64, f64, f
         source_x: S::from_f64(x),
         source_y: S::from_f64(y.abs()),
         sigma: S::from_f64(sigma),
-        tau: if y >= 0.0 { Side::First } else { Side::Second },
+        tau: if y >= 0.0 { Side::FIRST } else { Side::SECOND },
         pseudo_source: PseudoSource::Source(id),
         source: id,
     }

@@ -1,6 +1,6 @@
 //! The corpus's whole figures: exactly flat grids and fans, symmetric pyramids and bipyramids,
-//! bowties and multi-component meshes (the kinds that are not a bumpy grid with one kind of
-//! surgery; those are in [`bumpy`](super::bumpy)).
+//! bowties, books and fins, and multi-component meshes (the kinds that are not a bumpy grid with
+//! one kind of surgery; those are in [`bumpy`](super::bumpy)).
 
 use super::draw::{bumpy_grid, chance, diagonals, dyadic, grid_corners, index, int};
 use super::soup::Soup;
@@ -243,6 +243,77 @@ fn fans_at_a_vertex(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>) 
             soup.faces.push([tip, pair[0], pair[1]]);
         }
         focus.push(ring[0]);
+    }
+    (soup, focus)
+}
+
+pub(super) fn non_manifold(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>) {
+    let (mut soup, mut focus) = if chance(rng, 0.5) {
+        book(rng, max_faces)
+    } else {
+        fins(rng, max_faces)
+    };
+    // Sometimes a copy of a face, the other way round, where there is room.
+    if soup.faces.len() < max_faces && chance(rng, 0.5) {
+        let [a, b, c] = soup.faces[index(rng, soup.faces.len())];
+        soup.faces.push([c, b, a]);
+        focus.extend([a, b, c]);
+    }
+    (soup, focus)
+}
+
+/// Three to five bumpy grids (pages) sharing their row `j = 0` (the spine, on the x axis, flat),
+/// page `p` turned about the spine by about `p / pages` of a turn: every spine edge has a face
+/// on each page.
+fn book(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>) {
+    let pages = int(rng, 3, 5) as usize;
+    let (mut page, nx, ny) = bumpy_grid(rng, max_faces / pages);
+    for p in &mut page.positions[..=nx] {
+        p[2] = 0.0;
+    }
+    let mut soup = page.clone();
+    let spine: Vec<(u32, u32)> = (0..=nx as u32).map(|i| (i, i)).collect();
+    for p in 1..pages {
+        let turn = std::f64::consts::TAU * (p as f64 + 0.4 * rng.next_f64()) / pages as f64;
+        let (sin, cos) = turn.sin_cos();
+        let mut turned = page.clone();
+        for q in &mut turned.positions {
+            *q = [q[0], q[1] * cos - q[2] * sin, q[1] * sin + q[2] * cos];
+        }
+        soup.append(&turned, &spine);
+    }
+    let mut focus = grid_corners(nx, ny);
+    focus.push(index(rng, nx + 1) as u32);
+    (soup, focus)
+}
+
+/// A bumpy grid with one to four fins: a triangle standing on an edge between two faces of the
+/// grid (and so a third face on it; a fourth if two fins share the edge), its apex above the
+/// edge's midpoint.
+fn fins(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>) {
+    let fins = int(rng, 1, 4) as usize;
+    let (mut soup, nx, ny) = bumpy_grid(rng, max_faces - fins);
+    let mut focus = grid_corners(nx, ny);
+    // The grid's faces come two by two, a cell's pair, which share its diagonal.
+    let diagonals: Vec<[u32; 2]> = soup
+        .faces
+        .chunks(2)
+        .map(|cell| {
+            let mut shared = cell[0].into_iter().filter(|v| cell[1].contains(v));
+            [0; 2].map(|_| shared.next().expect("a cell's faces share a diagonal"))
+        })
+        .collect();
+    for _ in 0..fins {
+        let [a, b] = diagonals[index(rng, diagonals.len())];
+        let (p, q) = (soup.positions[a as usize], soup.positions[b as usize]);
+        let lift = [
+            dyadic(rng.next_f64() - 0.5),
+            dyadic(rng.next_f64() - 0.5),
+            dyadic(0.25 + rng.next_f64()),
+        ];
+        let apex = soup.add_vertex([0, 1, 2].map(|i| 0.5 * (p[i] + q[i]) + lift[i]));
+        soup.faces.push([a, b, apex]);
+        focus.extend([a, b, apex]);
     }
     (soup, focus)
 }

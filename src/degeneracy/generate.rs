@@ -1,6 +1,7 @@
 //! Seeded degenerate meshes: the inputs on which a geodesic engine is most tempted to answer
 //! wrongly without saying so (coincident vertices, zero-area faces, straight paths through
-//! vertices, slivers, exact ties, extreme scales, bowties, several components).
+//! vertices, slivers, exact ties, extreme scales, bowties, non-manifold edges, several
+//! components).
 //!
 //! Every mesh is a deterministic function of its kind and seed (through
 //! [`SplitMix64`](crate::mesh::shapes::SplitMix64)) and is accepted by [`TriMesh::new`].
@@ -47,11 +48,15 @@ pub enum DegenerateKind {
     /// Several components (grids, bipyramids, single triangles) plus vertices no face uses,
     /// some at the position of a used vertex; vertex numbers shuffled.
     Components,
+    /// Edges shared by more than two faces: a book of three to five bumpy pages sharing one
+    /// row of edges (the spine), or a bumpy grid with fins standing on some of its edges;
+    /// sometimes with a copy of a face.
+    NonManifold,
 }
 
 impl DegenerateKind {
     /// Every kind, in the order the corpus cycles through them.
-    pub const ALL: [DegenerateKind; 10] = [
+    pub const ALL: [DegenerateKind; 11] = [
         DegenerateKind::CoincidentVertices,
         DegenerateKind::ZeroAreaFaces,
         DegenerateKind::FlatGrid,
@@ -62,6 +67,7 @@ impl DegenerateKind {
         DegenerateKind::MixedMagnitudes,
         DegenerateKind::Bowtie,
         DegenerateKind::Components,
+        DegenerateKind::NonManifold,
     ];
 
     /// The kind's name in reports (snake case, as serialized).
@@ -77,6 +83,7 @@ impl DegenerateKind {
             DegenerateKind::MixedMagnitudes => "mixed_magnitudes",
             DegenerateKind::Bowtie => "bowtie",
             DegenerateKind::Components => "components",
+            DegenerateKind::NonManifold => "non_manifold",
         }
     }
 }
@@ -141,6 +148,7 @@ pub fn degenerate_case(kind: DegenerateKind, seed: u64, size: MeshSize) -> Degen
         DegenerateKind::MixedMagnitudes => bumpy::mixed_magnitudes(rng, max_faces),
         DegenerateKind::Bowtie => figures::bowtie(rng, max_faces),
         DegenerateKind::Components => figures::components(rng, max_faces),
+        DegenerateKind::NonManifold => figures::non_manifold(rng, max_faces),
     };
     debug_assert!(soup.faces.len() <= max_faces, "{kind:?} seed {seed}");
     let mut focus: Vec<VertexId> = focus.into_iter().map(VertexId).collect();
@@ -386,6 +394,21 @@ mod tests {
             assert!(!bowties.is_empty(), "seed {}", case.seed);
             assert!(bowties.iter().all(|v| case.focus.contains(v)));
         }
+    }
+
+    #[test]
+    fn non_manifold_meshes_have_an_edge_with_more_than_two_faces_at_their_focus() {
+        let mut copies = 0;
+        for case in cases(DegenerateKind::NonManifold) {
+            let report = case.mesh.validation();
+            assert!(!report.non_manifold_edges.is_empty(), "seed {}", case.seed);
+            assert!(report
+                .non_manifold_edges
+                .iter()
+                .any(|e| e.vertices.iter().any(|v| case.focus.contains(v))));
+            copies += report.duplicate_faces.len();
+        }
+        assert!(copies > 0);
     }
 
     #[test]

@@ -1,10 +1,10 @@
 //! A corpus of degenerate meshes and the invariants a geodesic distance must keep on them, in
 //! every backend: no silently wrong answer on degenerate input.
 //!
-//! - [`generate`](degenerate_case): seeded meshes of ten [`DegenerateKind`]s (coincident
+//! - [`generate`](degenerate_case): seeded meshes of eleven [`DegenerateKind`]s (coincident
 //!   vertices and zero-length edges, zero-area faces, exactly flat grids and fans, slivers,
-//!   symmetric pyramids, scales from `2^-600` to `2^600`, mixed magnitudes, bowties, several
-//!   components and loose vertices);
+//!   symmetric pyramids, scales from `2^-600` to `2^600`, mixed magnitudes, bowties, edges
+//!   shared by more than two faces, several components and loose vertices);
 //! - [`check_invariants`]: `d(a, a) = 0`, the straight-line and edge-path bounds (exact in the
 //!   exact backend), reachability, symmetry, traced paths [LZT §2] and agreement with a
 //!   reference backend, each broken invariant a [`Violation`];

@@ -2,9 +2,10 @@
 //! (grids, midpoint subdivision, a vertex split along a zero-length edge, a point inserted on an
 //! edge with a zero-area face to close the T-junction).
 //!
-//! Every operation keeps each edge in at most two faces and never repeats a vertex in a face,
-//! so [`Soup::into_mesh`] always satisfies [`TriMesh::new`]'s preconditions for finite
-//! positions.
+//! No operation repeats a vertex in a face, so [`Soup::into_mesh`] always satisfies
+//! [`TriMesh::new`]'s preconditions for finite positions. Each keeps every edge in at most two
+//! faces, but for the non-manifold kind's, which glue pages along a spine and stand fins on
+//! edges.
 
 use crate::mesh::TriMesh;
 use std::collections::{HashMap, HashSet};
@@ -202,7 +203,7 @@ impl Soup {
     /// The mesh.
     pub(crate) fn into_mesh(self) -> TriMesh {
         TriMesh::new(self.positions, self.faces)
-            .expect("the surgery keeps edges in at most two faces and corners distinct")
+            .expect("the surgery keeps the corners of every face distinct")
     }
 }
 

@@ -38,7 +38,7 @@ pub enum MeshError {
         /// The repeated vertex.
         vertex: u32,
     },
-    /// An edge is shared by more than two faces.
+    /// An edge is shared by more than two faces (refused by [`TriMesh::require_manifold`](super::TriMesh::require_manifold) only).
     #[error("edge ({a}, {b}) is shared by {face_count} faces (first three: {faces:?}); the surface is not a manifold there")]
     NonManifoldEdge {
         /// One end of the edge.
@@ -49,6 +49,17 @@ pub enum MeshError {
         face_count: usize,
         /// The first faces found on it.
         faces: Vec<usize>,
+    },
+    /// A face repeats the corners of an earlier one (refused by
+    /// [`TriMesh::require_manifold`](super::TriMesh::require_manifold) only).
+    #[error(
+        "face {face} has the same corners as face {copy_of}; the surface is not a manifold there"
+    )]
+    DuplicateFace {
+        /// The later face.
+        face: usize,
+        /// The earlier face with the same corners.
+        copy_of: usize,
     },
     /// There are no faces: no surface to measure distances on. An empty file, a point cloud, or
     /// faces under a name the reader does not know (a PLY element `faces` rather than `face`)

@@ -15,13 +15,14 @@ pub(crate) mod vector;
 pub use error::MeshError;
 pub use ids::{EdgeId, FaceId, VertexId};
 pub use topology::{Edge, Wing};
-pub use validation::ValidationReport;
+pub use validation::{DuplicateFace, NonManifoldEdge, ValidationReport};
 pub(crate) use vector::normalizing_power;
 
 /// A triangle mesh with its edge-face topology.
 ///
-/// Edges are undirected; each has one or two faces (a third face is a [`MeshError`]). Corner `i`
-/// of a face and corner `i + 1` (mod 3) span the face's edge `i`.
+/// Edges are undirected; each has one or two faces, or more where the surface is not a manifold
+/// (a "book" of pages along one edge). Corner `i` of a face and corner `i + 1` (mod 3) span the
+/// face's edge `i`.
 #[derive(Debug, Clone)]
 pub struct TriMesh {
     positions: Vec<[f64; 3]>,
@@ -36,9 +37,13 @@ impl TriMesh {
     /// A mesh needs at least one face; vertices that no face uses are kept (and reported in
     /// [`TriMesh::validation`]), and are unreachable from every source.
     ///
+    /// Edges shared by more than two faces and faces repeating another's corners are usable
+    /// and reported ([`ValidationReport::non_manifold_edges`],
+    /// [`ValidationReport::duplicate_faces`]); [`TriMesh::require_manifold`] refuses them.
+    ///
     /// # Errors
-    /// [`MeshError`] for no faces at all, a NaN or infinite coordinate, an index out of range, a
-    /// face that repeats a vertex, or an edge shared by more than two faces.
+    /// [`MeshError`] for no faces at all, a NaN or infinite coordinate, an index out of range, or
+    /// a face that repeats a vertex.
     ///
     /// # Example
     /// ```
@@ -91,7 +96,7 @@ impl TriMesh {
                 }
             }
         }
-        let (topology, report) = topology::Topology::build(&positions, &faces)?;
+        let (topology, report) = topology::Topology::build(&positions, &faces);
         Ok(TriMesh {
             positions,
             faces,
@@ -180,7 +185,7 @@ impl TriMesh {
     }
 
     /// Whether geodesics may bend at the vertex, so that it must act as a pseudo-source \[MMP87\]:
-    /// boundary and bowtie vertices, vertices whose angle sum is at least 2 pi (saddles and,
+    /// boundary and bowtie vertices, ends of edges shared by more than two faces, vertices whose angle sum is at least 2 pi (saddles and,
     /// to be safe under rounding, flat ones), and the corners of degenerate faces
     /// ([`ValidationReport::zero_area_faces`]). Over-approximating costs wedges, never
     /// correctness: a path through any vertex is a path on the surface.
@@ -209,16 +214,97 @@ impl TriMesh {
         self.topology.unit_scale
     }
 
-    /// Whether the vertex lies on the boundary or joins several fans (a bowtie).
+    /// Whether the vertex lies on the boundary or where the surface is not a manifold: it joins
+    /// several fans (a bowtie) or ends an edge shared by more than two faces.
     pub fn is_boundary_vertex(&self, v: VertexId) -> bool {
         self.topology.boundary_vertex[v.index()]
     }
 
-    /// The face on side `side` (0 or 1, as in [`Edge::faces`]) of an edge, with its apex and
-    /// its two other edges; `None` if that side has no face.
+    /// The face on side `side` of an edge (below [`TriMesh::side_count`]; sides 0 and 1 are
+    /// [`Edge::faces`]), with its apex and its two other edges; `None` if that side has no face.
     #[inline]
     pub fn wing(&self, e: EdgeId, side: usize) -> Option<&Wing> {
-        self.topology.wings[2 * e.index() + side].as_ref()
+        self.topology.wing(e, side)
+    }
+
+    /// The number of sides of an edge: 2 (side 1 is empty on the boundary), or one per face on
+    /// an edge shared by more than two faces.
+    #[inline]
+    pub fn side_count(&self, e: EdgeId) -> usize {
+        2 + self.topology.extra_faces(e).len()
+    }
+
+    /// The faces of an edge, side by side.
+    pub fn edge_faces(&self, e: EdgeId) -> impl Iterator<Item = FaceId> + '_ {
+        let extra = self.topology.extra_faces(e).iter().copied();
+        self.edge(e).faces.into_iter().flatten().chain(extra)
+    }
+
+    /// The side of edge `e` on which face `f` lies, if `f` is one of its faces.
+    #[inline]
+    pub fn side_of(&self, e: EdgeId, f: FaceId) -> Option<usize> {
+        match self.edge(e).faces.iter().position(|&g| g == Some(f)) {
+            Some(side) => Some(side),
+            None => self
+                .topology
+                .extra_faces(e)
+                .iter()
+                .position(|&g| g == f)
+                .map(|i| i + 2),
+        }
+    }
+
+    /// Where the data of side `side` of edge `e` lives in an array with one entry per side
+    /// of every edge (of length [`TriMesh::side_slot_count`]).
+    #[inline]
+    pub(crate) fn side_slot(&self, e: EdgeId, side: usize) -> usize {
+        self.topology.side_slot(e, side)
+    }
+
+    /// The number of sides of all edges.
+    pub(crate) fn side_slot_count(&self) -> usize {
+        self.topology.wings.len()
+    }
+
+    /// The strict check: refuses a mesh that is not a manifold along its edges, as a caller who
+    /// wants no such surface asks.
+    ///
+    /// # Errors
+    /// [`MeshError::NonManifoldEdge`] for the first edge shared by more than two faces,
+    /// otherwise [`MeshError::DuplicateFace`] for the first face repeating an earlier one.
+    ///
+    /// # Example
+    /// ```
+    /// use exact_geodesics::{MeshError, TriMesh};
+    /// // Three pages along the edge (0, 1).
+    /// let positions = vec![
+    ///     [0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, 1.0],
+    /// ];
+    /// let mesh = TriMesh::new(positions, vec![[0, 1, 2], [1, 0, 3], [0, 1, 4]])?;
+    /// assert_eq!(mesh.validation().non_manifold_edges.len(), 1);
+    /// assert!(matches!(
+    ///     mesh.require_manifold(),
+    ///     Err(MeshError::NonManifoldEdge { a: 0, b: 1, face_count: 3, .. })
+    /// ));
+    /// # Ok::<(), MeshError>(())
+    /// ```
+    pub fn require_manifold(&self) -> Result<(), MeshError> {
+        if let Some(n) = self.report.non_manifold_edges.first() {
+            let faces: Vec<usize> = self.edge_faces(n.edge).map(FaceId::index).collect();
+            return Err(MeshError::NonManifoldEdge {
+                a: n.vertices[0].0,
+                b: n.vertices[1].0,
+                face_count: faces.len(),
+                faces: faces.into_iter().take(3).collect(),
+            });
+        }
+        match self.report.duplicate_faces.first() {
+            Some(d) => Err(MeshError::DuplicateFace {
+                face: d.face.index(),
+                copy_of: d.copy_of.index(),
+            }),
+            None => Ok(()),
+        }
     }
 
     /// Length of every edge, indexed by [`EdgeId`].

@@ -1,15 +1,22 @@
 //! Edge-face topology: undirected edges, the faces on each side, vertex stars.
+//!
+//! An edge has a side per face: two on a manifold edge (the second empty on the boundary),
+//! more on an edge that three or more faces share. A face that repeats the corners of an
+//! earlier one is a copy of it: it shares that face's edges but is none of their faces.
 
+use super::validation::{DuplicateFace, NonManifoldEdge};
 use super::vector::{angle, cross, length, normalizing_power, sub, unit, TWO_TO_64};
-use super::{EdgeId, FaceId, MeshError, ValidationReport, VertexId};
+use super::{EdgeId, FaceId, ValidationReport, VertexId};
 use std::collections::HashMap;
 
-/// An undirected edge: its two end vertices (`vertices[0] < vertices[1]`) and its one or two faces.
+/// An undirected edge: its two end vertices (`vertices[0] < vertices[1]`) and its first two
+/// faces.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Edge {
     /// End vertices; the edge's local x axis runs from `vertices[0]` to `vertices[1]`.
     pub vertices: [VertexId; 2],
-    /// The face on each side; `faces[1]` is `None` on the boundary.
+    /// The faces on sides 0 and 1; `faces[1]` is `None` on the boundary. An edge shared by
+    /// more than two faces has more sides ([`TriMesh::edge_faces`](super::TriMesh::edge_faces)).
     pub faces: [Option<FaceId>; 2],
 }
 
@@ -28,11 +35,6 @@ impl Edge {
     /// Whether the edge has a single face.
     pub fn is_boundary(&self) -> bool {
         self.faces[1].is_none()
-    }
-
-    /// The side (0 or 1) on which `f` lies, if `f` is one of the edge's faces.
-    pub fn side_of(&self, f: FaceId) -> Option<usize> {
-        self.faces.iter().position(|&g| g == Some(f))
     }
 }
 
@@ -55,7 +57,13 @@ pub struct Wing {
 pub(super) struct Topology {
     pub(super) edges: Vec<Edge>,
     pub(super) face_edges: Vec<[EdgeId; 3]>,
+    /// The wings of sides 0 and 1 of every edge (`2 e + side`), then those of the further
+    /// sides of edges with more than two faces, edge by edge.
     pub(super) wings: Vec<Option<Wing>>,
+    /// Faces beyond the first two of each edge: `extra_start[e]..extra_start[e + 1]` indexes
+    /// `extra_faces`, and side `2 + i` of edge `e` is its `i`-th extra face.
+    extra_start: Vec<u32>,
+    extra_faces: Vec<FaceId>,
     pub(super) edge_length: Vec<f64>,
     pub(super) angle_sum: Vec<f64>,
     pub(super) boundary_vertex: Vec<bool>,
@@ -152,15 +160,27 @@ impl Topology {
     pub(super) fn build(
         positions: &[[f64; 3]],
         faces: &[[u32; 3]],
-    ) -> Result<(Topology, ValidationReport), MeshError> {
+    ) -> (Topology, ValidationReport) {
         let nv = positions.len();
         let mut report = ValidationReport::default();
         let mut edge_of: HashMap<(u32, u32), u32> = HashMap::with_capacity(faces.len() * 2);
         let mut edges: Vec<Edge> = Vec::with_capacity(faces.len() * 3 / 2 + 3);
-        let mut extra_faces: HashMap<u32, Vec<usize>> = HashMap::new();
+        let mut extra: Vec<(usize, FaceId)> = Vec::new();
+        let mut first_with_corners: HashMap<[u32; 3], u32> = HashMap::with_capacity(faces.len());
+        let mut is_copy = vec![false; faces.len()];
         let mut face_edges = Vec::with_capacity(faces.len());
         let mut forward: Vec<[bool; 2]> = Vec::with_capacity(edges.capacity());
         for (fi, f) in faces.iter().enumerate() {
+            let mut corners = *f;
+            corners.sort_unstable();
+            let first = *first_with_corners.entry(corners).or_insert(fi as u32);
+            if first != fi as u32 {
+                is_copy[fi] = true;
+                report.duplicate_faces.push(DuplicateFace {
+                    face: FaceId(fi as u32),
+                    copy_of: FaceId(first),
+                });
+            }
             let mut fe = [EdgeId(0); 3];
             for i in 0..3 {
                 let (a, b) = (f[i], f[(i + 1) % 3]);
@@ -173,31 +193,43 @@ impl Topology {
                     forward.push([false; 2]);
                     (edges.len() - 1) as u32
                 });
+                fe[i] = EdgeId(id);
+                if is_copy[fi] {
+                    continue;
+                }
                 let edge = &mut edges[id as usize];
                 let slot = if edge.faces[0].is_none() {
                     0
                 } else if edge.faces[1].is_none() {
                     1
                 } else {
-                    extra_faces.entry(id).or_default().push(fi);
+                    extra.push((id as usize, FaceId(fi as u32)));
                     continue;
                 };
                 edge.faces[slot] = Some(FaceId(fi as u32));
                 forward[id as usize][slot] = a < b;
-                fe[i] = EdgeId(id);
             }
             face_edges.push(fe);
         }
-        if let Some((&id, extra)) = extra_faces.iter().min_by_key(|(&id, _)| id) {
-            let e = &edges[id as usize];
-            let mut listed: Vec<usize> = e.faces.iter().flatten().map(|f| f.index()).collect();
-            listed.extend(extra.iter().copied());
-            return Err(MeshError::NonManifoldEdge {
-                a: e.vertices[0].0,
-                b: e.vertices[1].0,
-                face_count: listed.len(),
-                faces: listed.into_iter().take(3).collect(),
-            });
+        // Extra faces in input order on each edge (the sort is stable).
+        let (extra_start, extra_faces) = csr(edges.len(), extra.into_iter());
+        let faces_of = |ei: usize| {
+            let more = &extra_faces[extra_start[ei] as usize..extra_start[ei + 1] as usize];
+            edges[ei]
+                .faces
+                .into_iter()
+                .flatten()
+                .chain(more.iter().copied())
+        };
+        for (ei, e) in edges.iter().enumerate() {
+            let face_count = faces_of(ei).count();
+            if face_count > 2 {
+                report.non_manifold_edges.push(NonManifoldEdge {
+                    edge: EdgeId(ei as u32),
+                    vertices: e.vertices,
+                    face_count,
+                });
+            }
         }
 
         // Geometry in coordinates scaled by a power of two (exact), so that squared lengths
@@ -227,35 +259,39 @@ impl Topology {
             1.0
         };
 
-        let mut wings = Vec::with_capacity(2 * edges.len());
+        let wing = |ei: usize, f: FaceId| {
+            let corners = faces[f.index()];
+            let fe = face_edges[f.index()];
+            let k = fe
+                .iter()
+                .position(|&x| x.index() == ei)
+                .expect("edge belongs to face");
+            let apex = VertexId(corners[(k + 2) % 3]);
+            // The face's other two edges: k+1 goes from corner k+1 to the apex, k+2 from the apex to corner k.
+            let (after, before) = (fe[(k + 1) % 3], fe[(k + 2) % 3]);
+            let (near, far) = if VertexId(corners[k]) == edges[ei].vertices[0] {
+                (before, after)
+            } else {
+                (after, before)
+            };
+            Wing {
+                face: f,
+                apex,
+                near,
+                far,
+            }
+        };
+        let mut wings = Vec::with_capacity(2 * edges.len() + extra_faces.len());
         for (ei, e) in edges.iter().enumerate() {
             for side in 0..2 {
-                wings.push(e.faces[side].map(|f| {
-                    let corners = faces[f.index()];
-                    let fe = face_edges[f.index()];
-                    let k = fe
-                        .iter()
-                        .position(|&x| x.index() == ei)
-                        .expect("edge belongs to face");
-                    let apex = VertexId(corners[(k + 2) % 3]);
-                    // The face's other two edges: k+1 goes from corner k+1 to the apex, k+2 from the apex to corner k.
-                    let (after, before) = (fe[(k + 1) % 3], fe[(k + 2) % 3]);
-                    let (near, far) = if VertexId(corners[k]) == e.vertices[0] {
-                        (before, after)
-                    } else {
-                        (after, before)
-                    };
-                    Wing {
-                        face: f,
-                        apex,
-                        near,
-                        far,
-                    }
-                }));
+                wings.push(e.faces[side].map(|f| wing(ei, f)));
             }
             if forward[ei][0] == forward[ei][1] && e.faces[1].is_some() {
                 report.inconsistently_oriented_edges += 1;
             }
+        }
+        for ei in 0..edges.len() {
+            wings.extend(faces_of(ei).skip(2).map(|f| Some(wing(ei, f))));
         }
         report.boundary_edges = edges.iter().filter(|e| e.is_boundary()).count();
 
@@ -264,6 +300,7 @@ impl Topology {
             faces
                 .iter()
                 .enumerate()
+                .filter(|&(fi, _)| !is_copy[fi])
                 .flat_map(|(fi, f)| f.iter().map(move |&v| (v as usize, FaceId(fi as u32)))),
         );
         let (vertex_edge_start, vertex_edge_list) = csr(
@@ -277,7 +314,7 @@ impl Topology {
 
         let mut angle_sum = vec![0.0; nv];
         let mut on_degenerate_face = vec![false; nv];
-        for (fi, f) in faces.iter().enumerate() {
+        for (fi, f) in faces.iter().enumerate().filter(|&(fi, _)| !is_copy[fi]) {
             let p = [0, 1, 2].map(|i| scaled(f[i] as usize));
             if is_degenerate(p) {
                 report.zero_area_faces.push(FaceId(fi as u32));
@@ -302,9 +339,15 @@ impl Topology {
             }
         }
 
+        // Geodesics may bend at the ends of boundary edges and of edges with more than two
+        // faces (where a path may turn into any of them).
         let mut boundary_vertex = vec![false; nv];
-        for e in edges.iter().filter(|e| e.is_boundary()) {
-            for v in e.vertices {
+        let non_manifold = report.non_manifold_edges.iter().map(|n| n.edge.index());
+        for ei in (0..edges.len())
+            .filter(|&ei| edges[ei].is_boundary())
+            .chain(non_manifold)
+        {
+            for v in edges[ei].vertices {
                 boundary_vertex[v.index()] = true;
             }
         }
@@ -319,11 +362,11 @@ impl Topology {
             for e in
                 &vertex_edge_list[vertex_edge_start[v] as usize..vertex_edge_start[v + 1] as usize]
             {
-                if let [Some(f0), Some(f1)] = edges[e.index()].faces {
-                    let i0 = star.iter().position(|&f| f == f0);
-                    let i1 = star.iter().position(|&f| f == f1);
-                    if let (Some(i0), Some(i1)) = (i0, i1) {
-                        fans.union(i0 as u32, i1 as u32);
+                let mut around =
+                    faces_of(e.index()).filter_map(|g| star.iter().position(|&f| f == g));
+                if let Some(first) = around.next() {
+                    for other in around {
+                        fans.union(first as u32, other as u32);
                     }
                 }
             }
@@ -337,20 +380,25 @@ impl Topology {
         }
 
         let mut components = UnionFind::new(faces.len());
-        for e in &edges {
-            if let [Some(f0), Some(f1)] = e.faces {
-                components.union(f0.0, f1.0);
+        for ei in 0..edges.len() {
+            let mut around = faces_of(ei);
+            if let Some(first) = around.next() {
+                for other in around {
+                    components.union(first.0, other.0);
+                }
             }
         }
         report.components = (0..faces.len() as u32)
-            .filter(|&f| components.find(f) == f)
+            .filter(|&f| !is_copy[f as usize] && components.find(f) == f)
             .count();
 
-        Ok((
+        (
             Topology {
                 edges,
                 face_edges,
                 wings,
+                extra_start,
+                extra_faces,
                 edge_length,
                 angle_sum,
                 boundary_vertex,
@@ -362,7 +410,30 @@ impl Topology {
                 vertex_edge_list,
             },
             report,
-        ))
+        )
+    }
+
+    /// The faces of edge `e` beyond its first two.
+    #[inline]
+    pub(super) fn extra_faces(&self, e: EdgeId) -> &[FaceId] {
+        let i = e.index();
+        &self.extra_faces[self.extra_start[i] as usize..self.extra_start[i + 1] as usize]
+    }
+
+    /// The wing of side `side` of edge `e`.
+    #[inline]
+    pub(super) fn wing(&self, e: EdgeId, side: usize) -> Option<&Wing> {
+        self.wings[self.side_slot(e, side)].as_ref()
+    }
+
+    /// Where the data of side `side` of edge `e` lives in per-side arrays such as `wings`.
+    #[inline]
+    pub(super) fn side_slot(&self, e: EdgeId, side: usize) -> usize {
+        if side < 2 {
+            2 * e.index() + side
+        } else {
+            2 * self.edges.len() + self.extra_start[e.index()] as usize + side - 2
+        }
     }
 
     pub(super) fn vertex_faces(&self, v: VertexId) -> &[FaceId] {

@@ -7,6 +7,30 @@
 use super::{EdgeId, FaceId, VertexId};
 use serde::Serialize;
 
+/// An edge that more than two faces share: the surface is not a manifold there. Geodesics
+/// reaching it through one face continue into every other, and its ends act as pseudo-sources
+/// ([`TriMesh::may_bend_geodesics`](super::TriMesh::may_bend_geodesics)).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct NonManifoldEdge {
+    /// The edge.
+    pub edge: EdgeId,
+    /// Its end vertices.
+    pub vertices: [VertexId; 2],
+    /// How many faces share it (copies of a face not counted).
+    pub face_count: usize,
+}
+
+/// A face whose three corners are those of an earlier face (in any order): the same triangle
+/// twice. The copy is ignored: it shares the earlier face's edges but is none of their faces,
+/// and a point named in it is that point of the earlier face.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct DuplicateFace {
+    /// The copy, which the engine ignores.
+    pub face: FaceId,
+    /// The first face with the same corners.
+    pub copy_of: FaceId,
+}
+
 /// Conditions found while building a [`TriMesh`](super::TriMesh) that leave it usable.
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 pub struct ValidationReport {
@@ -27,7 +51,11 @@ pub struct ValidationReport {
     /// Vertices whose incident faces form more than one fan (a "bowtie"). Geodesics may pass
     /// through such a vertex from one fan to another; it is treated as a pseudo-source.
     pub non_manifold_vertices: Vec<VertexId>,
-    /// Edges whose two faces traverse them in the same direction (inconsistent orientation).
+    /// Edges shared by more than two faces, in edge order.
+    pub non_manifold_edges: Vec<NonManifoldEdge>,
+    /// Faces that repeat an earlier face's corners, in face order.
+    pub duplicate_faces: Vec<DuplicateFace>,
+    /// Edges whose first two faces traverse them in the same direction (inconsistent orientation).
     /// The engine does not need a consistent orientation; writers keep the input order.
     pub inconsistently_oriented_edges: usize,
     /// Number of edges with a single face.
@@ -79,6 +107,27 @@ impl ValidationReport {
                 self.non_manifold_vertices[0]
             ));
         }
+        if !self.non_manifold_edges.is_empty() {
+            out.push(format!(
+                "{} edge(s) shared by more than two faces{}: geodesics continue into every face of such an edge and may bend at its ends",
+                self.non_manifold_edges.len(),
+                listed(self.non_manifold_edges.iter().map(|n| {
+                    let [a, b] = n.vertices;
+                    format!("({}, {}) with {} faces", a.0, b.0, n.face_count)
+                }))
+            ));
+        }
+        if !self.duplicate_faces.is_empty() {
+            out.push(format!(
+                "{} face(s) repeating an earlier face's corners, ignored{}",
+                self.duplicate_faces.len(),
+                listed(
+                    self.duplicate_faces
+                        .iter()
+                        .map(|d| format!("{} (copy of {})", d.face, d.copy_of))
+                )
+            ));
+        }
         if self.inconsistently_oriented_edges > 0 {
             out.push(format!(
                 "{} edge(s) with inconsistently oriented faces",
@@ -93,4 +142,12 @@ impl ValidationReport {
         }
         out
     }
+}
+
+/// `: a, b, c` for the first few items (`, ...` if there are more).
+fn listed(items: impl ExactSizeIterator<Item = String>) -> String {
+    const SHOWN: usize = 8;
+    let more = items.len() > SHOWN;
+    let shown: Vec<String> = items.take(SHOWN).collect();
+    format!(": {}{}", shown.join(", "), if more { ", ..." } else { "" })
 }

@@ -367,9 +367,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     x: S::from_f64(t) * &length,
                     y: S::zero(),
                 };
-                self.add_wedge(edge, on_edge, Side::First, S::zero(), source, k);
+                self.add_wedge(edge, on_edge, Side::FIRST, S::zero(), source, k);
                 let p = self.unfolding.position(self.mesh, point);
-                let faces: Vec<FaceId> = self.mesh.edge(edge).faces.into_iter().flatten().collect();
+                let faces: Vec<FaceId> = self.mesh.edge_faces(edge).collect();
                 self.emit_from_point(&p, faces, Vec::new(), S::zero(), source, k);
             }
             SurfacePoint::Face { face, .. } => {
@@ -410,13 +410,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 }
             }
             for g in mesh.face_edges(f) {
-                let side = mesh.edge(g).side_of(f).expect("edge of the face");
+                let side = mesh.side_of(g, f).expect("edge of the face");
                 // An edge of length zero carries no wedge.
                 let Some(at) = self.unfolding.planar(mesh, g, p) else {
                     continue;
                 };
                 if self.unfolding.is_inside(g, &at) {
-                    for beyond in mesh.edge(g).faces.into_iter().flatten() {
+                    for beyond in mesh.edge_faces(g) {
                         if !done.contains(&beyond) {
                             done.push(beyond);
                             faces.push(beyond);
@@ -438,15 +438,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
         for &f in mesh.vertex_faces(v) {
             let corner = mesh.face(f).iter().position(|&c| c == v).expect("corner");
             let g = mesh.face_edges(f)[(corner + 1) % 3];
-            let side = mesh.edge(g).side_of(f).expect("edge of the face");
+            let side = mesh.side_of(g, f).expect("edge of the face");
             // None only for an opposite edge of length zero, which carries no wedge.
-            let Some((x, y)) = self.unfolding.apex(g, side).cloned() else {
+            let Some((x, y)) = self.unfolding.apex(mesh, g, side).cloned() else {
                 continue;
             };
             let at = Planar { x, y };
             // Only a degenerate face has a corner on its opposite edge's line.
             if mesh.is_degenerate_face(f) && self.unfolding.is_inside(g, &at) {
-                beyond.extend(mesh.edge(g).faces[1 - side]);
+                beyond.extend(mesh.edge_faces(g).filter(|&h| h != f));
             }
             self.add_wedge(g, at, Side::from_index(side), sigma.clone(), source, k);
         }
@@ -457,7 +457,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 self.unfolding.length(g).clone()
             };
             let at = Planar { x, y: S::zero() };
-            self.add_wedge(g, at, Side::First, sigma.clone(), source, k);
+            self.add_wedge(g, at, Side::FIRST, sigma.clone(), source, k);
         }
         if !beyond.is_empty() {
             let p = self.unfolding.position(mesh, &SurfacePoint::Vertex(v));
@@ -494,7 +494,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
 
     /// Propagates a wedge across the face on the far side of its edge [SSK+05 §4.1, LZT Fig. 2c]:
     /// the rays from the pseudo-source through `b0` and `b1` cut the face's two other edges, and
-    /// the pieces between them become new wedges with the same pseudo-source.
+    /// the pieces between them become new wedges with the same pseudo-source. On an edge shared
+    /// by more than two faces, every face but the one the wedge came through is a far side, each
+    /// laid out below the edge's line as the one face beyond a manifold edge is.
     fn propagate_wedge(&mut self, w: &Wedge<S>, at_ends: &EndValues<S>) {
         S::locate(Site {
             edge: Some(w.edge.0),
@@ -503,9 +505,17 @@ impl<'m, S: Scalar> Engine<'m, S> {
         if w.source_y.sign() == Sign::Zero {
             return; // A wedge along its edge's line sees nothing beyond the line.
         }
+        for side in 0..self.mesh.side_count(w.edge) {
+            if side != w.tau.index() {
+                self.propagate_into(w, at_ends, side);
+            }
+        }
+    }
+
+    /// Propagates a wedge across the face on side `side` of its edge, if there is one.
+    fn propagate_into(&mut self, w: &Wedge<S>, at_ends: &EndValues<S>, side: usize) {
         let mesh = self.mesh;
-        let Some(layout) = FaceLayout::new(mesh, &self.unfolding, w.edge, w.tau.opposite().index())
-        else {
+        let Some(layout) = FaceLayout::new(mesh, &self.unfolding, w.edge, side) else {
             return;
         };
         let face = layout.wing.face;
@@ -582,7 +592,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             } else {
                 (p0, p1)
             };
-            let tau = Side::from_index(mesh.edge(g).side_of(face).expect("edge of the face"));
+            let tau = Side::from_index(mesh.side_of(g, face).expect("edge of the face"));
             let child = Wedge {
                 edge: g,
                 b0,

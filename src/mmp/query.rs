@@ -126,7 +126,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         at: &Planar<S>,
         accept: impl Fn(&Wedge<S>) -> bool,
     ) -> Option<Best<S>> {
-        let side = self.mesh.edge(edge).side_of(face)?;
+        let side = self.mesh.side_of(edge, face)?;
         let length = self.unfolding.length(edge);
         let mut best = None;
         for (i, w) in self.wedges[edge.index()].iter().enumerate() {

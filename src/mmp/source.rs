@@ -114,7 +114,9 @@ impl SurfacePoint {
     /// Checks the point against the mesh and puts it in canonical form: barycentric coordinates
     /// are divided by their sum, and a point on a face's boundary or an edge's end is named by
     /// the smallest simplex containing it (the engine relies on this to emit wedges into every
-    /// face around it).
+    /// face around it); a point of a face repeating an earlier face's corners
+    /// ([`ValidationReport::duplicate_faces`](crate::mesh::ValidationReport::duplicate_faces))
+    /// is named in the earlier face.
     ///
     /// Any finite, non-negative, not-all-zero barycentric triple is accepted, however large or
     /// small: the coordinates are divided by the largest of them before they are summed, so the
@@ -156,6 +158,16 @@ impl SurfacePoint {
                 let scaled = bary.map(|b| b / largest);
                 let sum: f64 = scaled.iter().sum();
                 let bary = scaled.map(|b| b / sum);
+                // A copy of an earlier face is that face.
+                let copies = &mesh.validation().duplicate_faces;
+                let (face, bary) = match copies.binary_search_by_key(&face, |d| d.face) {
+                    Ok(i) => {
+                        let (copy, kept) = (mesh.face(face), copies[i].copy_of);
+                        let at = |c| copy.iter().position(|&x| x == c).expect("same corners");
+                        (kept, mesh.face(kept).map(|c| bary[at(c)]))
+                    }
+                    Err(_) => (face, bary),
+                };
                 let corners = mesh.face(face);
                 let zeros: Vec<usize> = (0..3).filter(|&i| bary[i] == 0.0).collect();
                 Ok(match zeros[..] {
@@ -200,13 +212,11 @@ impl SurfacePoint {
         }
     }
 
-    /// The faces that contain the point (one, two, or a vertex's star).
+    /// The faces that contain the point (one, those of an edge, or a vertex's star).
     pub fn faces(&self, mesh: &TriMesh) -> Vec<FaceId> {
         match *self {
             SurfacePoint::Vertex(v) => mesh.vertex_faces(v).to_vec(),
-            SurfacePoint::Edge { edge, .. } => {
-                mesh.edge(edge).faces.iter().flatten().copied().collect()
-            }
+            SurfacePoint::Edge { edge, .. } => mesh.edge_faces(edge).collect(),
             SurfacePoint::Face { face, .. } => vec![face],
         }
     }

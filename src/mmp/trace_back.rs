@@ -78,11 +78,14 @@ enum Step<S> {
 }
 
 /// Where a walk stopped.
-enum WalkEnd {
+enum WalkEnd<S> {
     /// At the pseudo-source it was heading for.
     PseudoSource,
     /// At a mesh vertex on the straight way to it.
     Vertex(VertexId),
+    /// At the point `x` of an edge shared by more than two faces, where the straight way goes
+    /// on into the face its wedge there came through.
+    Edge { edge: EdgeId, x: S },
 }
 
 impl<S: Scalar> GeodesicField<'_, S> {
@@ -156,6 +159,21 @@ impl<S: Scalar> GeodesicField<'_, S> {
                         WalkEnd::PseudoSource => w.pseudo_source,
                         // The straight path runs through a mesh vertex: it goes on from there.
                         WalkEnd::Vertex(v) => PseudoSource::Vertex(v),
+                        // The straight path crosses an edge shared by more than two faces:
+                        // it goes on by the wedge there, into the face that wedge came through
+                        // (a point of the edge is seen alike from each of its faces).
+                        WalkEnd::Edge { edge, x } => {
+                            let at = Planar { x, y: S::zero() };
+                            let face = self.mesh.edge_faces(edge).next().expect("a face");
+                            via = self
+                                .best_through_edge(edge, face, &at, |_| true)
+                                .ok_or_else(|| TraceError::Lost {
+                                    near: format!("{edge}"),
+                                })?
+                                .via;
+                            start = None;
+                            continue;
+                        }
                     }
                 }
             };
@@ -242,11 +260,11 @@ impl<S: Scalar> GeodesicField<'_, S> {
         for &face in self.mesh.vertex_faces(v) {
             let corner = self.mesh.face(face).iter().position(|&c| c == v)?;
             let edge = self.mesh.face_edges(face)[(corner + 1) % 3];
-            let Some(side) = self.mesh.edge(edge).side_of(face) else {
+            let Some(side) = self.mesh.side_of(edge, face) else {
                 continue;
             };
             // No apex on an opposite edge of length zero, which carries no wedge.
-            let Some((x, y)) = self.unfolding.apex(edge, side).cloned() else {
+            let Some((x, y)) = self.unfolding.apex(self.mesh, edge, side).cloned() else {
                 continue;
             };
             let beyond = |w: &Wedge<S>| !own(w) && w.tau.index() != side;
@@ -261,7 +279,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             };
             let at = Planar { x, y: S::zero() };
             let arrives = |w: &Wedge<S>| !own(w) && self.ray_enters_corner(w, &at);
-            for face in e.faces.into_iter().flatten() {
+            for face in self.mesh.edge_faces(edge) {
                 consider(self.best_through_edge(edge, face, &at, arrives));
             }
         }
@@ -283,7 +301,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 w.source_x.compare(&at.x) != Ordering::Greater
             };
         }
-        let Some((cx, h)) = self.unfolding.apex(w.edge, w.tau.index()) else {
+        let Some((cx, h)) = self.unfolding.apex(self.mesh, w.edge, w.tau.index()) else {
             return false;
         };
         // u runs along the edge away from the vertex, c to the apex, d to the pseudo-source.
@@ -315,14 +333,21 @@ impl<S: Scalar> GeodesicField<'_, S> {
     ) -> Result<Step<S>, TraceError> {
         let w = &self.wedges[edge.index()][wedge];
         let e = self.mesh.edge(edge);
-        let side = e.side_of(face).expect("face of the edge");
+        let side = self.mesh.side_of(edge, face).expect("face of the edge");
         let s = w.source_point();
         let lost = || TraceError::Lost {
             near: format!("{edge}"),
         };
+        // The face the wedge came through.
+        let wedge_face = || {
+            self.mesh
+                .wing(edge, w.tau.index())
+                .map(|wing| wing.face)
+                .ok_or_else(lost)
+        };
         if at.y.sign() == Sign::Zero {
             // On the edge itself: the way to the pseudo-source starts in the face on its side.
-            let face = e.faces[w.tau.index()].ok_or_else(lost)?;
+            let face = wedge_face()?;
             // A point on the edge but named otherwise (a vertex in the middle of a degenerate
             // face, a point of a degenerate face) is also that point of the edge, which the
             // face the walk starts in has in its closure.
@@ -361,7 +386,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         }
         let length = self.unfolding.length(edge);
         push_point(simplices, edge_point(edge, &x, length));
-        let beyond = e.faces[w.tau.index()].ok_or_else(lost)?;
+        let beyond = wedge_face()?;
         Ok(Step::Walk(Walk {
             edge,
             face: beyond,
@@ -391,7 +416,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         target: PseudoSource,
         simplices: &mut Vec<SurfacePoint>,
         budget: usize,
-    ) -> Result<WalkEnd, TraceError> {
+    ) -> Result<WalkEnd<S>, TraceError> {
         for _ in 0..budget {
             if let Some(points) = self.closure_path(walk.face, target) {
                 for point in points {
@@ -401,8 +426,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             }
             let side = self
                 .mesh
-                .edge(walk.edge)
-                .side_of(walk.face)
+                .side_of(walk.edge, walk.face)
                 .expect("face of the edge");
             let lost = || TraceError::Lost {
                 near: format!("{}", walk.face),
@@ -462,8 +486,17 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 simplices,
                 edge_point(next_edge, &position, self.unfolding.length(next_edge)),
             );
+            if self.mesh.side_count(next_edge) > 2 {
+                return Ok(WalkEnd::Edge {
+                    edge: next_edge,
+                    x: position,
+                });
+            }
             let e = self.mesh.edge(next_edge);
-            let here = e.side_of(walk.face).expect("face of the edge");
+            let here = self
+                .mesh
+                .side_of(next_edge, walk.face)
+                .expect("face of the edge");
             let next_face = e.faces[1 - here].ok_or_else(lost)?;
             walk = Walk {
                 edge: next_edge,
@@ -500,10 +533,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         // Only an edge of a degenerate face can hold another face's vertex inside it.
         let beside_degenerate = |g: EdgeId| {
             self.mesh
-                .edge(g)
-                .faces
-                .into_iter()
-                .flatten()
+                .edge_faces(g)
                 .any(|h| self.mesh.is_degenerate_face(h))
         };
         if !self
@@ -541,7 +571,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     continue;
                 }
                 let here = edge_point(g, &on.x, self.unfolding.length(g));
-                for beyond in self.mesh.edge(g).faces.into_iter().flatten() {
+                for beyond in self.mesh.edge_faces(g) {
                     if reached.iter().all(|(r, _)| *r != beyond) {
                         reached.push((beyond, Some((next, here))));
                     }

@@ -33,7 +33,8 @@ pub(crate) struct Unfolding<S> {
     zero_length: Vec<bool>,
     /// Whether a vertex ends an edge of length zero (has a twin at its place).
     has_twin: Vec<bool>,
-    /// `apex[2 e + side]`: `(x, h)` of the apex of the face on `side` of edge `e`, `h >= 0`.
+    /// `(x, h)` of the apex of the face on each side of each edge, `h >= 0`, at the side's
+    /// [`TriMesh::side_slot`].
     apex: Vec<Option<(S, S)>>,
     /// The mesh's unit scale.
     scale: f64,
@@ -114,7 +115,7 @@ impl<S: Scalar> Unfolding<S> {
         let edge_count = mesh.edge_count();
         let mut edge_length = Vec::with_capacity(edge_count);
         let mut zero_length = Vec::with_capacity(edge_count);
-        let mut apex = Vec::with_capacity(2 * edge_count);
+        let mut apex = vec![None; mesh.side_slot_count()];
         let mut has_twin = vec![false; mesh.vertex_count()];
         for (i, e) in mesh.edges().iter().enumerate() {
             let frame = EdgeFrame::<S>::new(mesh, e.vertices[0], e.vertices[1]);
@@ -125,12 +126,13 @@ impl<S: Scalar> Unfolding<S> {
             }
             edge_length.push(frame.as_ref().map_or_else(S::zero, EdgeFrame::length));
             zero_length.push(frame.is_none());
-            for side in 0..2 {
-                let wing = mesh.wing(EdgeId(i as u32), side);
-                apex.push(frame.as_ref().zip(wing).map(|(frame, wing)| {
-                    let p = frame.planar(&vertex_point(mesh, wing.apex));
-                    (p.x, p.y)
-                }));
+            let e = EdgeId(i as u32);
+            for side in 0..mesh.side_count(e) {
+                apex[mesh.side_slot(e, side)] =
+                    frame.as_ref().zip(mesh.wing(e, side)).map(|(frame, wing)| {
+                        let p = frame.planar(&vertex_point(mesh, wing.apex));
+                        (p.x, p.y)
+                    });
             }
         }
         Unfolding {
@@ -162,8 +164,8 @@ impl<S: Scalar> Unfolding<S> {
     /// `(x, h)` of the apex of the face on `side` of `e` (`None` without a face there, or on
     /// an edge of length zero).
     #[inline]
-    pub(crate) fn apex(&self, e: EdgeId, side: usize) -> Option<&(S, S)> {
-        self.apex[2 * e.index() + side].as_ref()
+    pub(crate) fn apex(&self, mesh: &TriMesh, e: EdgeId, side: usize) -> Option<&(S, S)> {
+        self.apex[mesh.side_slot(e, side)].as_ref()
     }
 
     /// A point in space (scaled coordinates) in the frame of edge `e`; `None` for an edge of
@@ -247,7 +249,7 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         side: usize,
     ) -> Option<Self> {
         let wing = mesh.wing(e, side)?;
-        let (apex_x, apex_h) = unfolding.apex(e, side)?;
+        let (apex_x, apex_h) = unfolding.apex(mesh, e, side)?;
         Some(FaceLayout {
             wing,
             length: unfolding.length(e),
@@ -433,7 +435,7 @@ mod tests {
         assert!(unfolding.is_zero_length(e));
         assert!(unfolding.has_twin(VertexId(0)) && unfolding.has_twin(VertexId(2)));
         assert!(!unfolding.has_twin(VertexId(1)));
-        assert!(unfolding.apex(e, 0).is_none());
+        assert!(unfolding.apex(&mesh, e, 0).is_none());
         let p = [
             Real::from_f64(0.5),
             Real::from_f64(0.0),

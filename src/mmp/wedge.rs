@@ -5,42 +5,33 @@ use crate::mesh::{EdgeId, VertexId};
 use crate::scalar::{Scalar, SourceDistance};
 use serde::Serialize;
 
-/// Which side of an edge a wedge's pseudo-source lies on (tau in Definition 1 [LZT §2]).
+/// Which side of an edge a wedge's pseudo-source lies on (tau in Definition 1 [LZT §2]): the
+/// side of the face the wedge came through, so that it goes on into the face (or, on an edge
+/// shared by more than two faces, the faces) on the other sides.
 ///
-/// `First` and `Second` name the edge's [`faces`](crate::mesh::Edge::faces)`[0]` and `[1]`. A wedge
-/// lying along its edge (pseudo-source on the edge's line) is on the `First` side by convention.
+/// Sides are numbered as [`TriMesh::wing`](crate::TriMesh::wing) numbers them: `FIRST` and
+/// `SECOND` are the edge's [`faces`](crate::mesh::Edge::faces)`[0]` and `[1]`, and an edge shared
+/// by more than two faces has a side per face. A wedge lying along its edge (pseudo-source on
+/// the edge's line) is on the `FIRST` side by convention.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-pub enum Side {
-    /// The side of the edge's first face.
-    First,
-    /// The side of the edge's second face.
-    Second,
-}
+pub struct Side(u32);
 
 impl Side {
-    /// 0 for `First`, 1 for `Second`.
+    /// The side of the edge's first face.
+    pub const FIRST: Side = Side(0);
+    /// The side of the edge's second face.
+    pub const SECOND: Side = Side(1);
+
+    /// The side's number: 0 for `FIRST`, 1 for `SECOND`, and so on.
     #[inline]
     pub fn index(self) -> usize {
-        self as usize
+        self.0 as usize
     }
 
-    /// The side with the given index (0 or 1).
+    /// The side with the given number.
     #[inline]
     pub fn from_index(i: usize) -> Side {
-        if i == 0 {
-            Side::First
-        } else {
-            Side::Second
-        }
-    }
-
-    /// The other side.
-    #[inline]
-    pub fn opposite(self) -> Side {
-        match self {
-            Side::First => Side::Second,
-            Side::Second => Side::First,
-        }
+        Side(i as u32)
     }
 }
 

@@ -120,9 +120,8 @@ pub struct Common {
     /// A non-negative number; `inf` is no limit.
     #[arg(long, allow_hyphen_values = true, value_parser = non_negative_distance)]
     pub max_distance: Option<f64>,
-    /// Split polygons with more than three corners into triangles instead of refusing them.
-    #[arg(long)]
-    pub triangulate: bool,
+    #[command(flatten)]
+    pub read: load::ReadArgs,
     /// Fail (exit 1) when the backend leaves a decision of the propagation uncertified,
     /// instead of warning on stderr.
     #[arg(long)]
@@ -182,7 +181,7 @@ pub struct Job {
 
 impl Common {
     fn job(&self) -> Result<Job, String> {
-        let mesh = load::load_mesh(&self.mesh, self.triangulate)?;
+        let mesh = load::load_mesh(&self.mesh, &self.read.options())?;
         let sources = self
             .sources
             .iter()

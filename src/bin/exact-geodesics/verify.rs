@@ -32,7 +32,7 @@ pub fn run(args: &VerifyArgs) -> Result<(), String> {
         .parent()
         .unwrap_or_else(|| std::path::Path::new("."))
         .join(&model.mesh);
-    let mesh = load::load_mesh(&mesh_path.to_string_lossy(), false)?;
+    let mesh = load::load_mesh(&mesh_path.to_string_lossy(), &Default::default())?;
     if mesh.vertex_count() != model.vertex_count || mesh.face_count() != model.face_count {
         return Err(format!(
             "{}: {} vertices and {} faces, but {name} describes {} and {}",

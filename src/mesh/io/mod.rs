@@ -58,6 +58,10 @@ pub struct ReadOptions {
     /// corner. Off by default because a fan is a choice the engine cannot undo: geodesics on the
     /// result depend on which diagonals were drawn, so the caller should opt in knowingly.
     pub triangulate: bool,
+    /// Refuse a surface that is not a manifold along its edges ([`TriMesh::require_manifold`]:
+    /// an edge shared by more than two faces, a face repeating another), naming the line of the
+    /// face that made it so. Off by default: such meshes propagate.
+    pub strict: bool,
 }
 
 /// How [`write_to`] encodes a PLY file.
@@ -210,30 +214,37 @@ impl Soup {
         Ok(())
     }
 
-    fn build(self, file: &str) -> Result<TriMesh, MeshIoError> {
+    fn build(self, file: &str, options: &ReadOptions) -> Result<TriMesh, MeshIoError> {
         let Soup {
             positions,
             faces,
             vertex_lines,
             face_lines,
         } = self;
-        TriMesh::new(positions, faces).map_err(|source| {
-            let line = match &source {
-                MeshError::NonFiniteCoordinate { vertex, .. } => vertex_lines.get(*vertex),
-                MeshError::VertexIndexOutOfRange { face, .. }
-                | MeshError::RepeatedVertex { face, .. } => face_lines.get(*face),
-                // The last listed face is the one that made the edge non-manifold.
-                MeshError::NonManifoldEdge { faces, .. } => {
-                    faces.iter().max().and_then(|&f| face_lines.get(f))
+        let strict = |mesh: TriMesh| match options.strict {
+            true => mesh.require_manifold().map(|()| mesh),
+            false => Ok(mesh),
+        };
+        TriMesh::new(positions, faces)
+            .and_then(strict)
+            .map_err(|source| {
+                let line = match &source {
+                    MeshError::NonFiniteCoordinate { vertex, .. } => vertex_lines.get(*vertex),
+                    MeshError::VertexIndexOutOfRange { face, .. }
+                    | MeshError::RepeatedVertex { face, .. }
+                    | MeshError::DuplicateFace { face, .. } => face_lines.get(*face),
+                    // The last listed face is the one that made the edge non-manifold.
+                    MeshError::NonManifoldEdge { faces, .. } => {
+                        faces.iter().max().and_then(|&f| face_lines.get(f))
+                    }
+                    _ => None,
+                };
+                MeshIoError::Mesh {
+                    file: file.to_owned(),
+                    line: line.copied(),
+                    source,
                 }
-                _ => None,
-            };
-            MeshIoError::Mesh {
-                file: file.to_owned(),
-                line: line.copied(),
-                source,
-            }
-        })
+            })
     }
 }
 

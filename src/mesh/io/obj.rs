@@ -85,7 +85,7 @@ pub(super) fn read<R: BufRead>(
             }
         }
     }
-    soup.build(name)
+    soup.build(name, options)
 }
 
 /// The 0-based vertex of a face corner `v`, `v/vt`, `v/vt/vn` or `v//vn`. OBJ counts from 1,

@@ -77,7 +77,7 @@ pub(super) fn read<R: BufRead>(
             let message = format!("the file ends after {faces_read} of {faces} faces");
             Err(parse_error(name, end, message))
         }
-        Some(_) => soup.build(name),
+        Some(_) => soup.build(name, options),
     }
 }
 

@@ -207,7 +207,7 @@ pub(super) fn read<R: BufRead>(
             }
         }
     }
-    soup.build(name)
+    soup.build(name, options)
 }
 
 /// Reads the header up to `end_header`, leaving `lines` at the first byte of data.

@@ -69,9 +69,8 @@ struct RunArgs {
             .range(i64::from(exact::MIN_PRECISION_CAP)..=i64::from(exact::MAX_PRECISION_CAP))
     )]
     precision_cap: u32,
-    /// Split polygons with more than three corners into triangles instead of refusing them.
-    #[arg(long)]
-    triangulate: bool,
+    #[command(flatten)]
+    read: load::ReadArgs,
     /// Directory to write into (created if missing).
     #[arg(long)]
     out: PathBuf,
@@ -91,7 +90,7 @@ impl RunArgs {
 
     /// Loads `spec` and normalizes it into the unit cube.
     fn unit_mesh(&self, spec: &str) -> Result<TriMesh, String> {
-        let mesh = load::load_mesh(spec, self.triangulate)?;
+        let mesh = load::load_mesh(spec, &self.read.options())?;
         normalize_to_unit_cube(&mesh).map_err(|e| format!("{spec}: {e}"))
     }
 

@@ -183,7 +183,7 @@ fn resolution_series(args: &Observation3Args) -> Result<Vec<ResolutionRow>, Stri
     if args.series.contains(&Series::Refined) && args.refinements > 0 {
         for spec in &args.meshes {
             let series = format!("refined:{spec}");
-            let mut mesh = crate::load::load_mesh(spec, args.run.triangulate)?;
+            let mut mesh = crate::load::load_mesh(spec, &args.run.read.options())?;
             for level in 0..=args.refinements {
                 if level > 0 {
                     mesh = shapes::subdivide(&mesh);
