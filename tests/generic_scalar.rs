@@ -64,13 +64,11 @@ impl Field for CloneOnly {
 }
 
 impl Scalar for CloneOnly {
-    // Keeps its values, as an exact type does: the engine's kept-value paths run on `f64`.
-    type Kept<T: Clone + std::fmt::Debug> = Option<T>;
-    fn keep<T: Clone + std::fmt::Debug>(make: impl FnOnce() -> T) -> Self::Kept<T> {
-        Some(make())
-    }
-    fn kept<T: Clone + std::fmt::Debug>(kept: &Self::Kept<T>) -> Option<T> {
-        kept.clone()
+    // Keeps no values, as f64: the same constructions, so the same answers to the bit.
+    type Kept<T: Clone + std::fmt::Debug> = ();
+    fn keep<T: Clone + std::fmt::Debug>(_make: impl FnOnce() -> T) -> Self::Kept<T> {}
+    fn kept<T: Clone + std::fmt::Debug>(_kept: &Self::Kept<T>) -> Option<T> {
+        None
     }
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign {
         f64::orientation([&p[0].0, &p[1].0], [&q[0].0, &q[1].0], [&r[0].0, &r[1].0])

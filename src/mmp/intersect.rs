@@ -7,9 +7,11 @@
 //! non-overlapping wedges (Property 2), splitting an existing wedge in two where the new one
 //! wins only in its middle (Fig. 8c, Fig. 10).
 
-use super::propagate::{EndValues, Engine, Slot, SlotState};
+use super::propagate::{Engine, Slot, SlotState};
+use super::provenance::{Anchor, Provenance};
 use super::stats::{Eq2Counts, Eq2Decision};
-use super::wedge::Wedge;
+use super::unfold::Planar;
+use super::wedge::{PseudoSource, Wedge};
 use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Scalar, Site, SourceDistance};
 use std::cmp::Ordering;
 
@@ -73,28 +75,33 @@ fn min_on<S: Scalar>(d: &SourceDistance<S>, lo: &S, hi: &S, at_lo: &S, at_hi: &S
 /// are constructions: rounded from the coefficients of eq. (2), a near-double root moves far
 /// (1.3 units on an edge of 1e8 in a mixed-magnitude mesh), so owners are not inferred by
 /// alternation from one piece, which would hand that whole stretch to the wrong wedge.
-/// `at_vertices[0]` (`[1]`) holds both distances at `lo` (`hi`) when that end is a vertex of
-/// the edge whose distances both wedges keep ([`EndValues`]): those, not values derived again,
-/// are compared there, so that a tie the engine built is seen as one.
+/// `known[0]` (`[1]`) holds both distances at `lo` (`hi`) where a wedge keeps its distance
+/// there ([`Provenance`]: at a vertex of the edge, or at a range end on a shadow line): those,
+/// not values derived again, are compared there, so that a tie the engine built is seen as one.
+/// `lower`: the wedge known to be lower on the whole range ([`lower_by_anchor`]).
 /// Returns the case and whether eq. (2) was solved.
 fn split_shared_range<S: Scalar>(
     pieces: &mut Vec<Piece<S>>,
     theirs: &SourceDistance<S>,
     mine: &SourceDistance<S>,
     [lo, hi]: [S; 2],
-    at_vertices: [Option<[S; 2]>; 2],
+    (known, lower): ([Option<[S; 2]>; 2], Option<Owner>),
     id: u32,
 ) -> (Eq2Case, bool) {
+    if let Some(owner) = lower {
+        push_piece(pieces, lo, hi, owner);
+        return (Eq2Case::None, false);
+    }
     if S::same_distance_function(theirs, mine, &(hi.clone() - &lo)) {
         push_piece(pieces, lo, hi, Owner::Old(id));
         return (Eq2Case::Infinite, true);
     }
-    let ties = at_vertices.each_ref().map(|v| {
+    let ties = known.each_ref().map(|v| {
         v.as_ref()
             .is_some_and(|[t, m]| t.compare_distance(m) == Ordering::Equal)
     });
     let [[their_lo, my_lo], [their_hi, my_hi]] = [(&lo, 0), (&hi, 1)].map(|(at, i)| {
-        at_vertices[i]
+        known[i]
             .clone()
             .unwrap_or_else(|| [theirs.at(at), mine.at(at)])
     });
@@ -130,42 +137,112 @@ fn split_shared_range<S: Scalar>(
     (case, true)
 }
 
+/// Which of two wedges is lower on all the range they share, when one of them has a range end
+/// anchored at the other's pseudo-source vertex, or keeps its distance at a vertex of the edge
+/// that is the other's pseudo-source, with the other's image and distance there: the first
+/// passes that vertex on a straight line, so by the triangle inequality it is nowhere higher
+/// than the vertex's own wedge, which it touches on the shadow line or at the vertex
+/// ([`Provenance`]). Asked only of pseudo-source wedges against wedges that keep values.
+fn lower_by_anchor<S: Scalar>(
+    (old, old_kept, id): (&Wedge<S>, &Provenance<S>, u32),
+    (new, new_kept): (&Wedge<S>, &Provenance<S>),
+    vertices: &[S; 2],
+) -> Option<Owner> {
+    let is_source_of = |a: &Anchor<S>, b: &Wedge<S>| {
+        matches!(b.pseudo_source, PseudoSource::Vertex(_))
+            && b.source_x.compare(&a.point.x) == Ordering::Equal
+            && b.source_y.compare(&a.point.y) == Ordering::Equal
+            && b.sigma.compare_distance(&a.distance) == Ordering::Equal
+    };
+    let at_vertex = |kept: &Provenance<S>, i: usize| {
+        S::kept(&kept.at_ends[i]).map(|distance| Anchor {
+            point: Planar {
+                x: vertices[i].clone(),
+                y: S::zero(),
+            },
+            distance,
+        })
+    };
+    let anchored_below = |kept: &Provenance<S>, other: &Wedge<S>| {
+        (0..2).any(|i| {
+            [kept.anchor(i), at_vertex(kept, i)]
+                .into_iter()
+                .flatten()
+                .any(|a| is_source_of(&a, other))
+        })
+    };
+    if anchored_below(old_kept, new) {
+        Some(Owner::Old(id))
+    } else if anchored_below(new_kept, old) {
+        Some(Owner::New)
+    } else {
+        None
+    }
+}
+
 /// Cuts the union of the new wedge's range and the ranges of the wedges it overlaps (sorted,
-/// disjoint, each with an id and its kept distances at the edge's ends) into pieces, each
-/// owned by the better wedge there.
+/// disjoint, each with an id and what it keeps of its construction) into pieces, each owned by
+/// the better wedge there.
 fn cut_into_pieces<'a, S: Scalar>(
     counts: &mut Eq2Counts,
     mut log: Option<&mut Vec<Eq2Decision>>,
     pieces: &mut Vec<Piece<S>>,
-    overlapping: impl Iterator<Item = (u32, &'a Wedge<S>, &'a EndValues<S>)>,
-    (w, at_ends): (&Wedge<S>, &EndValues<S>),
+    overlapping: impl Iterator<Item = (u32, &'a Wedge<S>, &'a Provenance<S>)>,
+    (w, my_kept): (&Wedge<S>, &Provenance<S>),
     length: &S,
 ) {
     let mine = w.distance_function();
     let mut cursor = w.b0.clone();
     let vertices = [S::zero(), length.clone()];
-    for (id, old, old_ends) in overlapping {
+    for (id, old, old_kept) in overlapping {
         if cursor.compare(&old.b0) == Ordering::Less {
             push_piece(pieces, cursor.clone(), old.b0.clone(), Owner::New);
         }
         if old.b0.compare(&w.b0) == Ordering::Less {
             push_piece(pieces, old.b0.clone(), w.b0.clone(), Owner::Old(id));
         }
-        let lo = S::max_of(&old.b0, &w.b0);
-        let hi = S::min_of(&old.b1, &w.b1);
+        let (c0, c1) = (old.b0.compare(&w.b0), old.b1.compare(&w.b1));
+        let lo = if c0 == Ordering::Less { &w.b0 } else { &old.b0 }.clone();
+        let hi = if c1 == Ordering::Greater {
+            &w.b1
+        } else {
+            &old.b1
+        }
+        .clone();
+        // Whose own range end `lo` and `hi` are: [end][old, new].
+        let owns = [
+            [c0 != Ordering::Less, c0 != Ordering::Greater],
+            [c1 != Ordering::Greater, c1 != Ordering::Less],
+        ];
         let theirs = old.distance_function();
         let record = log.is_some().then(|| {
             let eq2 = Eq2Coefficients::new(&theirs, &mine, &lo);
             let range = [lo.to_f64(), hi.to_f64()];
             (range, [eq2.a, eq2.b, eq2.c].map(|c| c.to_f64()))
         });
-        // Both distances at a shared end that is a vertex, if both wedges keep them.
-        let at_vertices = [(&lo, 0), (&hi, 1)].map(|(end, i)| {
-            let kept = [S::kept(&old_ends[i])?, S::kept(&at_ends[i])?];
-            (end.compare(&vertices[i]) == Ordering::Equal).then_some(kept)
+        // Both distances at a shared end where either wedge keeps its own: at a vertex of the
+        // edge, or at its range end on a shadow line (the other wedge's is derived there).
+        let known = [(&lo, 0), (&hi, 1)].map(|(end, i)| {
+            let kept = [old_kept, my_kept];
+            let mut values = kept.map(|k| S::kept(&k.at_ends[i]));
+            if values.iter().all(Option::is_none) || end.compare(&vertices[i]) != Ordering::Equal {
+                values = [0, 1].map(|k| {
+                    let anchor = owns[i][k].then(|| kept[k].anchor(i)).flatten();
+                    anchor.map(|a| a.distance_function().at(end))
+                });
+            }
+            if values.iter().all(Option::is_none) {
+                return None;
+            }
+            let [t, m] = values;
+            Some([
+                t.unwrap_or_else(|| theirs.at(end)),
+                m.unwrap_or_else(|| mine.at(end)),
+            ])
         });
+        let lower = lower_by_anchor((old, old_kept, id), (w, my_kept), &vertices);
         let range = [lo, hi.clone()];
-        let (case, solved) = split_shared_range(pieces, &theirs, &mine, range, at_vertices, id);
+        let (case, solved) = split_shared_range(pieces, &theirs, &mine, range, (known, lower), id);
         counts.count(case);
         if let (Some(log), Some((range, coefficients))) = (log.as_deref_mut(), record) {
             log.push(Eq2Decision {
@@ -210,7 +287,7 @@ pub fn intersect<S: Scalar>(
         .enumerate()
         .filter(|(_, old)| overlaps(old))
         .map(|(i, old)| (i as u32, old));
-    let none = EndValues::<S>::default();
+    let none = Provenance::<S>::default();
     let overlapping = overlapping.map(|(i, old)| (i, old, &none));
     let new = (arriving, &none);
     cut_into_pieces(
@@ -247,7 +324,7 @@ pub fn intersect<S: Scalar>(
 
 impl<S: Scalar> Engine<'_, S> {
     /// Inserts a wedge on its edge, intersecting it with the wedges there.
-    pub(crate) fn insert(&mut self, w: Wedge<S>, at_ends: EndValues<S>) {
+    pub(crate) fn insert(&mut self, w: Wedge<S>, kept: Provenance<S>) {
         let e = w.edge;
         S::locate(Site {
             edge: Some(e.0),
@@ -273,9 +350,9 @@ impl<S: Scalar> Engine<'_, S> {
         let log = self.record_decisions.then_some(&mut self.stats.decisions);
         let overlapping = self.lists[e.index()][first..end].iter().map(|&id| {
             let slot = &self.slots[id as usize];
-            (id, &slot.wedge, &slot.at_ends)
+            (id, &slot.wedge, &slot.kept)
         });
-        let new = (&w, &at_ends);
+        let new = (&w, &kept);
         cut_into_pieces(
             &mut self.stats.eq2,
             log,
@@ -285,7 +362,7 @@ impl<S: Scalar> Engine<'_, S> {
             &length,
         );
         if pieces.iter().any(|p| p.owner == Owner::New) {
-            self.rebuild(&w, &at_ends, first, end, &mut pieces, &length);
+            self.rebuild(&w, &kept, first, end, &mut pieces, &length);
         }
         self.scratch.pieces = pieces;
     }
@@ -294,7 +371,7 @@ impl<S: Scalar> Engine<'_, S> {
     fn rebuild(
         &mut self,
         w: &Wedge<S>,
-        at_ends: &EndValues<S>,
+        kept: &Provenance<S>,
         first: usize,
         end: usize,
         pieces: &mut Vec<Piece<S>>,
@@ -308,6 +385,14 @@ impl<S: Scalar> Engine<'_, S> {
         let [v0, v1] = self.mesh.edge(e).vertices;
         let zero = S::zero();
         let mine = w.distance_function();
+        // Which range ends of a wedge a piece keeps (asked only where anchors depend on it).
+        let anchored = |k: &Provenance<S>| k.anchor(0).is_some() || k.anchor(1).is_some();
+        let keeps = |w: &Wedge<S>, lo: &S, hi: &S| {
+            [
+                w.b0.compare(lo) == Ordering::Equal,
+                w.b1.compare(hi) == Ordering::Equal,
+            ]
+        };
         for piece in pieces.drain(..) {
             if !S::has_extent(&piece.lo, &piece.hi, length) {
                 continue;
@@ -315,30 +400,35 @@ impl<S: Scalar> Engine<'_, S> {
             match piece.owner {
                 Owner::New => {
                     if S::within(&zero, &piece.lo, &piece.hi, length) {
-                        let d = S::kept(&at_ends[0]).unwrap_or_else(|| mine.at(&zero));
+                        let d = S::kept(&kept.at_ends[0]).unwrap_or_else(|| mine.at(&zero));
                         self.improve_vertex(v0, d, w.source);
                     }
                     if S::within(length, &piece.lo, &piece.hi, length) {
-                        let d = S::kept(&at_ends[1]).unwrap_or_else(|| mine.at(length));
+                        let d = S::kept(&kept.at_ends[1]).unwrap_or_else(|| mine.at(length));
                         self.improve_vertex(v1, d, w.source);
                     }
+                    let piece_kept = if anchored(kept) {
+                        kept.trimmed(keeps(w, &piece.lo, &piece.hi))
+                    } else {
+                        kept.clone()
+                    };
                     let mut wedge = w.clone();
                     wedge.b0 = piece.lo;
                     wedge.b1 = piece.hi;
-                    let id = self.allocate(wedge, at_ends.clone(), SlotState::Queued);
+                    let id = self.allocate(wedge, piece_kept, SlotState::Queued);
                     self.push_wedge_event(id);
                     ids.push(id);
                 }
                 Owner::Old(id) => {
                     let slot = &self.slots[id as usize];
-                    let unchanged = slot.wedge.b0.compare(&piece.lo) == Ordering::Equal
-                        && slot.wedge.b1.compare(&piece.hi) == Ordering::Equal;
+                    let kept_ends = keeps(&slot.wedge, &piece.lo, &piece.hi);
+                    let unchanged = kept_ends == [true, true];
                     let state = slot.state;
                     let target = if reused.contains(&id) {
                         let mut wedge = slot.wedge.clone();
                         wedge.b0 = piece.lo;
                         wedge.b1 = piece.hi;
-                        let kept = slot.at_ends.clone();
+                        let kept = slot.kept.trimmed(kept_ends);
                         self.allocate(wedge, kept, state)
                     } else {
                         reused.push(id);
@@ -348,6 +438,7 @@ impl<S: Scalar> Engine<'_, S> {
                             let slot = &mut self.slots[id as usize];
                             slot.wedge.b0 = piece.lo;
                             slot.wedge.b1 = piece.hi;
+                            slot.kept = slot.kept.trimmed(kept_ends);
                         }
                         id
                     };
@@ -377,19 +468,19 @@ impl<S: Scalar> Engine<'_, S> {
         self.scratch.ids = ids;
     }
 
-    fn allocate(&mut self, wedge: Wedge<S>, at_ends: EndValues<S>, state: SlotState) -> u32 {
+    fn allocate(&mut self, wedge: Wedge<S>, kept: Provenance<S>, state: SlotState) -> u32 {
         self.stats.wedges_created += 1;
         if let Some(id) = self.free.pop() {
             let slot = &mut self.slots[id as usize];
             slot.wedge = wedge;
-            slot.at_ends = at_ends;
+            slot.kept = kept;
             slot.state = state;
             slot.generation = slot.generation.wrapping_add(1);
             id
         } else {
             self.slots.push(Slot {
                 wedge,
-                at_ends,
+                kept,
                 state,
                 generation: 0,
             });

@@ -7,6 +7,7 @@ mod coverage;
 mod field;
 mod intersect;
 mod propagate;
+mod provenance;
 mod query;
 mod source;
 mod stats;

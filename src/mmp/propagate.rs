@@ -3,6 +3,7 @@
 
 use super::field::GeodesicField;
 use super::intersect::Scratch;
+use super::provenance::{Anchor, Provenance};
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::unfold::{FaceLayout, Planar, Unfolding};
@@ -115,15 +116,9 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     Ok(engine.finish(sources))
 }
 
-/// A wedge about to be born on an edge: the edge, its range, its pseudo-source there, and its
-/// distances at the edge's ends.
-type Child<S> = (EdgeId, S, S, Planar<S>, EndValues<S>);
-
-/// A wedge's distance function at its edge's `vertices[0]` and `vertices[1]`, kept by number
-/// types that keep values ([`Scalar::Kept`]): every wedge born of one construction across a
-/// face, and all their descendants that keep a vertex of it as an end of their edge, give that
-/// vertex the very same value, so an exact backend sees their ties by structure.
-pub(crate) type EndValues<S> = [<S as Scalar>::Kept<S>; 2];
+/// A wedge about to be born on an edge: the edge, the ends of its range (unsorted), its
+/// pseudo-source there, and what it keeps of its construction.
+type Child<S> = (EdgeId, [S; 2], Planar<S>, Provenance<S>);
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum SlotState {
@@ -135,7 +130,7 @@ pub(crate) enum SlotState {
 #[derive(Clone, Debug)]
 pub(crate) struct Slot<S: Scalar> {
     pub(crate) wedge: Wedge<S>,
-    pub(crate) at_ends: EndValues<S>,
+    pub(crate) kept: Provenance<S>,
     pub(crate) state: SlotState,
     pub(crate) generation: u32,
 }
@@ -244,9 +239,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
                             continue;
                         }
                         s.state = SlotState::Propagated;
-                        let (wedge, at_ends) = (s.wedge.clone(), s.at_ends.clone());
+                        let (wedge, kept) = (s.wedge.clone(), s.kept.clone());
                         self.stats.wedges_propagated += 1;
-                        self.propagate_wedge(&wedge, &at_ends);
+                        self.propagate_wedge(&wedge, &kept);
                     }
                 }
                 EventKind::Vertex(v) => {
@@ -367,7 +362,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     x: S::from_f64(t) * &length,
                     y: S::zero(),
                 };
-                self.add_wedge(edge, on_edge, Side::FIRST, S::zero(), source, k);
+                self.add_wedge(edge, on_edge, Side::FIRST, S::zero(), (source, k), None);
                 let p = self.unfolding.position(self.mesh, point);
                 let faces: Vec<FaceId> = self.mesh.edge_faces(edge).collect();
                 self.emit_from_point(&p, faces, Vec::new(), S::zero(), source, k);
@@ -423,7 +418,14 @@ impl<'m, S: Scalar> Engine<'m, S> {
                         }
                     }
                 }
-                self.add_wedge(g, at, Side::from_index(side), sigma.clone(), source, k);
+                self.add_wedge(
+                    g,
+                    at,
+                    Side::from_index(side),
+                    sigma.clone(),
+                    (source, k),
+                    None,
+                );
             }
         }
     }
@@ -435,6 +437,26 @@ impl<'m, S: Scalar> Engine<'m, S> {
     fn emit_from_vertex(&mut self, v: VertexId, sigma: S, source: PseudoSource, k: usize) {
         let mesh = self.mesh;
         let mut beyond = Vec::new();
+        // The distance through the vertex to each neighbour, one value for every wedge of the
+        // vertex that reaches the neighbour (kept by number types that keep values).
+        let through: Vec<(VertexId, S::Kept<S>)> = mesh
+            .vertex_edges(v)
+            .iter()
+            .filter_map(|&g| {
+                let other = mesh.edge(g).other(v)?;
+                Some((other, S::keep(|| sigma.clone() + self.unfolding.length(g))))
+            })
+            .collect();
+        let to = |u: VertexId| -> S::Kept<S> {
+            if u == v {
+                return S::keep(|| sigma.clone());
+            }
+            through
+                .iter()
+                .find(|(w, _)| *w == u)
+                .map(|(_, d)| d.clone())
+                .unwrap_or_default()
+        };
         for &f in mesh.vertex_faces(v) {
             let corner = mesh.face(f).iter().position(|&c| c == v).expect("corner");
             let g = mesh.face_edges(f)[(corner + 1) % 3];
@@ -448,7 +470,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
             if mesh.is_degenerate_face(f) && self.unfolding.is_inside(g, &at) {
                 beyond.extend(mesh.edge_faces(g).filter(|&h| h != f));
             }
-            self.add_wedge(g, at, Side::from_index(side), sigma.clone(), source, k);
+            let ends = mesh.edge(g).vertices.map(to);
+            let tau = Side::from_index(side);
+            self.add_wedge(g, at, tau, sigma.clone(), (source, k), Some(ends));
         }
         for &g in mesh.vertex_edges(v) {
             let x = if mesh.edge(g).vertices[0] == v {
@@ -457,7 +481,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 self.unfolding.length(g).clone()
             };
             let at = Planar { x, y: S::zero() };
-            self.add_wedge(g, at, Side::FIRST, sigma.clone(), source, k);
+            let ends = mesh.edge(g).vertices.map(to);
+            self.add_wedge(g, at, Side::FIRST, sigma.clone(), (source, k), Some(ends));
         }
         if !beyond.is_empty() {
             let p = self.unfolding.position(mesh, &SurfacePoint::Vertex(v));
@@ -466,15 +491,16 @@ impl<'m, S: Scalar> Engine<'m, S> {
         }
     }
 
-    /// Adds a wedge covering the whole edge `g`.
+    /// Adds a wedge covering the whole edge `g`, of pseudo-source `source` leading back to
+    /// source `k`, with its distances at the edge's vertices if given (else its own).
     fn add_wedge(
         &mut self,
         g: EdgeId,
         at: Planar<S>,
         tau: Side,
         sigma: S,
-        source: PseudoSource,
-        k: usize,
+        (source, k): (PseudoSource, usize),
+        at_ends: Option<[S::Kept<S>; 2]>,
     ) {
         let wedge = Wedge {
             edge: g,
@@ -487,9 +513,11 @@ impl<'m, S: Scalar> Engine<'m, S> {
             pseudo_source: source,
             source: k,
         };
-        let d = wedge.distance_function();
-        let at_ends = [S::keep(|| d.at(&wedge.b0)), S::keep(|| d.at(&wedge.b1))];
-        self.insert(wedge, at_ends);
+        let at_ends = at_ends.unwrap_or_else(|| {
+            let d = wedge.distance_function();
+            [S::keep(|| d.at(&wedge.b0)), S::keep(|| d.at(&wedge.b1))]
+        });
+        self.insert(wedge, Provenance::new(at_ends, [None, None]));
     }
 
     /// Propagates a wedge across the face on the far side of its edge [SSK+05 §4.1, LZT Fig. 2c]:
@@ -497,7 +525,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// the pieces between them become new wedges with the same pseudo-source. On an edge shared
     /// by more than two faces, every face but the one the wedge came through is a far side, each
     /// laid out below the edge's line as the one face beyond a manifold edge is.
-    fn propagate_wedge(&mut self, w: &Wedge<S>, at_ends: &EndValues<S>) {
+    fn propagate_wedge(&mut self, w: &Wedge<S>, kept: &Provenance<S>) {
         S::locate(Site {
             edge: Some(w.edge.0),
             what: "propagation across a face",
@@ -507,13 +535,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
         }
         for side in 0..self.mesh.side_count(w.edge) {
             if side != w.tau.index() {
-                self.propagate_into(w, at_ends, side);
+                self.propagate_into(w, kept, side);
             }
         }
     }
 
     /// Propagates a wedge across the face on side `side` of its edge, if there is one.
-    fn propagate_into(&mut self, w: &Wedge<S>, at_ends: &EndValues<S>, side: usize) {
+    fn propagate_into(&mut self, w: &Wedge<S>, kept: &Provenance<S>, side: usize) {
         let mesh = self.mesh;
         let Some(layout) = FaceLayout::new(mesh, &self.unfolding, w.edge, side) else {
             return;
@@ -521,11 +549,24 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let face = layout.wing.face;
         let s = w.source_point();
         let length = layout.length;
+        // The ray through a range end with an anchor starts at the anchor: the same line,
+        // from the vertex whose wedges continue it on the other side (see `provenance.rs`).
+        // An anchor on the edge's line (a vertex of a degenerate face) gives no direction.
+        let anchors = [kept.anchor(0), kept.anchor(1)];
+        let from = |i: usize| {
+            anchors[i]
+                .as_ref()
+                .filter(|a| a.point.y.sign() == Sign::Positive)
+                .map_or(&s, |a| &a.point)
+        };
         // Which way the rays through the range's ends pass the apex decides which edges the
         // children lie on: asked of the number type on the stored values (an orientation),
         // never read off a constructed shadow. Whether the apex itself is reached is asked at
         // the backend's resolution, as for any point of a range.
-        let (side0, side1) = (layout.ray_side(&s, &w.b0), layout.ray_side(&s, &w.b1));
+        let (side0, side1) = (
+            layout.ray_side(from(0), &w.b0),
+            layout.ray_side(from(1), &w.b1),
+        );
         let apex_distance = || layout.apex_distance(&s) + &w.sigma;
         let at_apex = S::keep(apex_distance);
         let apex = S::within(&layout.apex_shadow(&s), &w.b0, &w.b1, length).then(|| {
@@ -542,52 +583,86 @@ impl<'m, S: Scalar> Engine<'m, S> {
             w.b0.sign() == Sign::Zero,
             w.b1.compare(length) == Ordering::Equal,
         );
+        // The anchor of a child's end on the ray through range end `i`, in the frame of edge
+        // `g`: the end's anchor carried along (`to`), or, where the ray passes a vertex end
+        // of the edge into the face (that vertex's shadow line), the vertex: the apex of the
+        // face seen from `g`, the very image its own wedges across `g` start from.
+        let anchor_on = |g: EdgeId, i: usize, to: &dyn Fn(&Planar<S>) -> Planar<S>| {
+            if let Some(a) = &anchors[i] {
+                return Some(Anchor {
+                    point: to(&a.point),
+                    distance: a.distance.clone(),
+                });
+            }
+            if !(if i == 0 { at_v0 } else { at_v1 }) {
+                return None;
+            }
+            let distance = S::kept(&kept.at_ends[i])?;
+            let (x, y) = self
+                .unfolding
+                .apex(mesh, g, mesh.side_of(g, face)?)?
+                .clone();
+            Some(Anchor {
+                point: Planar { x, y },
+                distance,
+            })
+        };
+        let (near, far) = (layout.wing.near, layout.wing.far);
+        let to_near = |p: &Planar<S>| layout.to_near(p);
+        let to_far = |p: &Planar<S>| layout.to_far(p);
         let mut children: [Option<Child<S>>; 2] = [None, None];
         // An edge of length zero (coincident corners) carries no wedge; its face passes rays
         // on to its other edge unchanged.
-        if side0 == Ordering::Less && !self.unfolding.is_zero_length(layout.wing.near) {
-            let t0 = if at_v0 {
-                zero.clone()
+        if side0 == Ordering::Less && !self.unfolding.is_zero_length(near) {
+            let (t0, a0) = if at_v0 {
+                (zero.clone(), None)
             } else {
-                clamp(layout.near_hit(&s, &w.b0))
+                let a0 = anchor_on(near, 0, &to_near);
+                (clamp(layout.near_hit(from(0), &w.b0)), a0)
             };
-            let t1 = if side1 == Ordering::Less {
-                clamp(layout.near_hit(&s, &w.b1))
+            let (t1, a1) = if side1 == Ordering::Less {
+                let a1 = anchor_on(near, 1, &to_near);
+                (clamp(layout.near_hit(from(1), &w.b1)), a1)
             } else {
-                one.clone()
+                (one.clone(), None)
             };
-            let (p0, p1) = (layout.near_position(&t0), layout.near_position(&t1));
+            let positions = [layout.near_position(&t0), layout.near_position(&t1)];
             let ends = if layout.near_reversed {
-                [at_apex.clone(), at_ends[0].clone()]
+                [at_apex.clone(), kept.at_ends[0].clone()]
             } else {
-                [at_ends[0].clone(), at_apex.clone()]
+                [kept.at_ends[0].clone(), at_apex.clone()]
             };
-            children[0] = Some((layout.wing.near, p0, p1, layout.to_near(&s), ends));
+            let kept = Provenance::new(ends, [a0, a1]);
+            children[0] = Some((near, positions, layout.to_near(&s), kept));
         }
-        if side1 == Ordering::Greater && !self.unfolding.is_zero_length(layout.wing.far) {
-            let u0 = if side0 == Ordering::Greater {
-                clamp(layout.far_hit(&s, &w.b0))
+        if side1 == Ordering::Greater && !self.unfolding.is_zero_length(far) {
+            let (u0, a0) = if side0 == Ordering::Greater {
+                let a0 = anchor_on(far, 0, &to_far);
+                (clamp(layout.far_hit(from(0), &w.b0)), a0)
             } else {
-                zero.clone()
+                (zero.clone(), None)
             };
-            let u1 = if at_v1 {
-                one.clone()
+            let (u1, a1) = if at_v1 {
+                (one.clone(), None)
             } else {
-                clamp(layout.far_hit(&s, &w.b1))
+                let a1 = anchor_on(far, 1, &to_far);
+                (clamp(layout.far_hit(from(1), &w.b1)), a1)
             };
-            let (p0, p1) = (layout.far_position(&u0), layout.far_position(&u1));
+            let positions = [layout.far_position(&u0), layout.far_position(&u1)];
             let ends = if layout.far_reversed {
-                [at_ends[1].clone(), at_apex.clone()]
+                [kept.at_ends[1].clone(), at_apex.clone()]
             } else {
-                [at_apex.clone(), at_ends[1].clone()]
+                [at_apex.clone(), kept.at_ends[1].clone()]
             };
-            children[1] = Some((layout.wing.far, p0, p1, layout.to_far(&s), ends));
+            let kept = Provenance::new(ends, [a0, a1]);
+            children[1] = Some((far, positions, layout.to_far(&s), kept));
         }
         if let Some((v, d)) = apex {
             self.improve_vertex(v, d, w.source);
         }
-        for (g, p0, p1, at, ends) in children.into_iter().flatten() {
+        for (g, [p0, p1], at, mut kept) in children.into_iter().flatten() {
             let (b0, b1) = if p0.compare(&p1) == Ordering::Greater {
+                kept.anchors.swap(0, 1);
                 (p1, p0)
             } else {
                 (p0, p1)
@@ -607,7 +682,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             if self.is_dominated_by_vertices(&child) {
                 self.stats.wedges_filtered += 1;
             } else {
-                self.insert(child, ends);
+                self.insert(child, kept);
             }
         }
     }

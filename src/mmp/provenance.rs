@@ -1,0 +1,86 @@
+//! What a wedge keeps of how it was built, for number types that keep values
+//! ([`Scalar::Kept`]): the engine then hands out one expression for one quantity, and an exact
+//! backend proves the identities MMP creates by structure instead of by arithmetic.
+//!
+//! Two identities matter [SSK+05 §4, LZT §2]:
+//! - a vertex lit by one construction across a face is reached again by its descendants (and
+//!   from both sides of the vertex): they keep the distance at their edge's vertices;
+//! - behind a vertex that acts as a pseudo-source, the wedges of the pseudo-source and the lit
+//!   wedges that pass the vertex meet along the vertex's *shadow line*, the ray from the lit
+//!   wedges' pseudo-source through the vertex: a lit wedge's range end on that line keeps the
+//!   vertex's image as an [`Anchor`], computes where the line goes on from the anchor (as the
+//!   pseudo-source's own wedges do from the same image), and gives its distance there as the
+//!   pseudo-source's wedges do.
+
+use super::unfold::Planar;
+use crate::scalar::{Scalar, SourceDistance};
+
+/// A vertex on the ray through a wedge's range end from the wedge's pseudo-source: the end lies
+/// on that vertex's shadow line.
+#[derive(Clone, Debug)]
+pub(crate) struct Anchor<S> {
+    /// The vertex's image in the edge's frame (on the wedge's side of the line).
+    pub(crate) point: Planar<S>,
+    /// The wedge's distance at the vertex.
+    pub(crate) distance: S,
+}
+
+impl<S: Scalar> Anchor<S> {
+    /// The wedge's distance along the edge seen from the anchor: equal to the wedge's own on
+    /// the shadow line, and built as a wedge of the vertex (a pseudo-source) builds its own.
+    pub(crate) fn distance_function(&self) -> SourceDistance<S> {
+        SourceDistance {
+            x: self.point.x.clone(),
+            y: self.point.y.clone(),
+            sigma: self.distance.clone(),
+        }
+    }
+}
+
+/// What a wedge keeps of how it was built (nothing for number types that keep no values).
+#[derive(Clone, Debug)]
+pub(crate) struct Provenance<S: Scalar> {
+    /// The wedge's distance function at its edge's `vertices[0]` and `vertices[1]`: every
+    /// wedge born of one construction across a face, and all their descendants that keep a
+    /// vertex of it as an end of their edge, give that vertex the very same value.
+    pub(crate) at_ends: [S::Kept<S>; 2],
+    /// The anchors of the range's ends `b0` and `b1`, where they lie on a shadow line.
+    pub(crate) anchors: [S::Kept<Anchor<S>>; 2],
+}
+
+impl<S: Scalar> Default for Provenance<S> {
+    fn default() -> Self {
+        Provenance {
+            at_ends: Default::default(),
+            anchors: Default::default(),
+        }
+    }
+}
+
+impl<S: Scalar> Provenance<S> {
+    /// The provenance of given distances at the edge's vertices and anchors of the range ends.
+    pub(crate) fn new(at_ends: [S::Kept<S>; 2], anchors: [Option<Anchor<S>>; 2]) -> Self {
+        Provenance {
+            at_ends,
+            anchors: anchors.map(|a| a.map_or_else(Default::default, |a| S::keep(|| a))),
+        }
+    }
+
+    /// The anchor of range end `i` (0: `b0`, 1: `b1`), if kept.
+    pub(crate) fn anchor(&self, i: usize) -> Option<Anchor<S>> {
+        S::kept(&self.anchors[i])
+    }
+
+    /// The same provenance with the anchors of the range ends that `keep` says are still the
+    /// wedge's ends (a trimmed end is a new point, no longer on the shadow line).
+    pub(crate) fn trimmed(&self, keep: [bool; 2]) -> Self {
+        let anchor = |i: usize| match (keep[i], self.anchor(i)) {
+            (true, Some(a)) => S::keep(|| a),
+            _ => Default::default(),
+        };
+        Provenance {
+            at_ends: self.at_ends.clone(),
+            anchors: [anchor(0), anchor(1)],
+        }
+    }
+}
