@@ -85,12 +85,6 @@ def test_sources_of_every_kind_are_accepted(icosphere):
     assert field.distance_at(("face", 7, (0.2501, 0.5, 0.2499))) < 1e-3
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="library bug, cause not investigated (src/mmp/query.rs, best_at): at a source "
-    "inside an edge or a face, distance_at and trace_back answer through a vertex (0.16 and "
-    "0.24 here) instead of 0",
-)
 def test_distance_at_an_edge_or_face_source_is_zero(icosphere):
     vertices, triangles = icosphere
     solver = eg.GeodesicSolver(vertices, triangles)
@@ -99,12 +93,6 @@ def test_distance_at_an_edge_or_face_source_is_zero(icosphere):
     assert [field.distance_at(p) for p in sources] == [0.0] * 4
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="library bug, cause not investigated (src/mmp/query.rs, best_through_edge): next "
-    "to a source on an edge, with a face source beside that edge, a point of the edge is "
-    "answered through a vertex (0.16 instead of 3e-5)",
-)
 def test_distance_next_to_an_edge_source_is_small(icosphere):
     vertices, triangles = icosphere
     solver = eg.GeodesicSolver(vertices, triangles)

@@ -89,7 +89,19 @@ impl<S: Scalar> GeodesicField<'_, S> {
         let mut best = None;
         for face in point.faces(self.mesh) {
             for edge in self.mesh.face_edges(face) {
-                let Some(at) = self.unfolding.planar(self.mesh, edge, &p) else {
+                let at = match *point {
+                    // A point of the edge is on its line exactly, not at a rounded height.
+                    SurfacePoint::Edge { edge: own, t }
+                        if own == edge && !self.unfolding.is_zero_length(edge) =>
+                    {
+                        Some(Planar {
+                            x: S::from_f64(t) * self.unfolding.length(edge),
+                            y: S::zero(),
+                        })
+                    }
+                    _ => self.unfolding.planar(self.mesh, edge, &p),
+                };
+                let Some(at) = at else {
                     continue; // An edge of length zero carries no wedge.
                 };
                 if let Some(found) = self.best_through_edge(edge, face, &at, |_| true) {
@@ -135,26 +147,34 @@ impl<S: Scalar> GeodesicField<'_, S> {
             }
             let on_line = at.y.sign() == Sign::Zero;
             let same_side = w.tau.index() == side;
+            // Where the ray from the pseudo-source to the point crosses the edge; `None` for
+            // the pseudo-source itself (a source inside a face or an edge), which every wedge
+            // of it reaches at its sigma, whatever range the wedge kept.
             let crossing = if w.source_y.sign() == Sign::Zero {
                 // A wedge along the edge's line reaches only points of the edge.
                 if !on_line {
                     continue;
                 }
-                at.x.clone()
+                Some(at.x.clone())
             } else if on_line {
-                at.x.clone()
+                Some(at.x.clone())
             } else if same_side {
-                // The point must lie between the pseudo-source and the edge.
-                if at.y.compare(&w.source_y) != Ordering::Less {
-                    continue;
+                // The point must lie between the pseudo-source and the edge, or be it.
+                match at.y.compare(&w.source_y) {
+                    Ordering::Greater => continue,
+                    Ordering::Equal if at.x.compare(&w.source_x) == Ordering::Equal => None,
+                    Ordering::Equal => continue,
+                    Ordering::Less => {
+                        let depth = w.source_y.clone() - &at.y;
+                        let run = (at.x.clone() - &w.source_x) * &w.source_y / depth;
+                        Some(w.source_x.clone() + run)
+                    }
                 }
-                let depth = w.source_y.clone() - &at.y;
-                w.source_x.clone() + (at.x.clone() - &w.source_x) * &w.source_y / depth
             } else {
                 let depth = w.source_y.clone() + &at.y;
-                w.source_x.clone() + (at.x.clone() - &w.source_x) * &w.source_y / depth
+                Some(w.source_x.clone() + (at.x.clone() - &w.source_x) * &w.source_y / depth)
             };
-            if !S::within(&crossing, &w.b0, &w.b1, length) {
+            if crossing.is_some_and(|c| !S::within(&c, &w.b0, &w.b1, length)) {
                 continue;
             }
             let dx = at.x.clone() - &w.source_x;

@@ -37,7 +37,7 @@ impl GeodesicPath {
                 let d = [0, 1, 2].map(|i| p[1][i] - p[0][i]);
                 d[0].hypot(d[1]).hypot(d[2])
             })
-            .sum()
+            .fold(0.0, |sum, d| sum + d)
     }
 }
 
