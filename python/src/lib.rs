@@ -38,7 +38,14 @@ fn read_mesh(
     path: std::path::PathBuf,
     triangulate: bool,
 ) -> PyResult<MeshArrays<'_>> {
-    let mesh = read_path(&path, &ReadOptions { triangulate }).map_err(value_error)?;
+    let mesh = read_path(
+        &path,
+        &ReadOptions {
+            triangulate,
+            ..ReadOptions::default()
+        },
+    )
+    .map_err(value_error)?;
     arrays(py, &mesh)
 }
 
