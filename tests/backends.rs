@@ -176,10 +176,7 @@ fn example1_symmetric_wedges_are_certified_infinite_in_the_exact_backend() {
         "{counts:?}"
     );
     // The engine meets the same case on e2 and decides it without an uncertified decision.
-    let options = PropagateOptions {
-        record_decisions: true,
-        ..Default::default()
-    };
+    let options = PropagateOptions::default().with_recorded_decisions();
     let field = propagate::<Real>(&mesh, &[SurfacePoint::Vertex(VertexId(0))], &options)
         .expect("v0 is a vertex");
     let e2 = mesh.edge_between(VertexId(5), VertexId(7)).expect("e2");

@@ -169,10 +169,8 @@ pub fn options(
     max_distance: Option<f64>,
     precision_cap: Option<u32>,
 ) -> PyResult<PropagateOptions> {
-    let mut options = PropagateOptions {
-        precision_cap,
-        ..PropagateOptions::default()
-    };
+    let mut options = PropagateOptions::default();
+    options.precision_cap = precision_cap;
     match max_distance {
         Some(d) if d.is_nan() || d < 0.0 => Err(value_error(format!(
             "max_distance must be a non-negative number (inf for no limit), not {d}"

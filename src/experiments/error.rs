@@ -6,6 +6,7 @@ use thiserror::Error;
 
 /// Why a model cannot be normalized or measured.
 #[derive(Debug, Error)]
+#[non_exhaustive]
 pub enum ExperimentError {
     /// Every vertex that a face uses is at the same point: there is no cube to scale into.
     #[error("the mesh has no extent: every vertex of a face is at {point:?}")]

@@ -7,6 +7,7 @@ use thiserror::Error;
 /// Face and vertex numbers are 0-based, in input order. Readers in [`crate::mesh::io`] wrap these
 /// with the file name and line.
 #[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
 pub enum MeshError {
     /// A coordinate is NaN or infinite.
     #[error("vertex {vertex} has a non-finite coordinate ({x}, {y}, {z})")]

@@ -33,6 +33,7 @@ pub struct DuplicateFace {
 
 /// Conditions found while building a [`TriMesh`](super::TriMesh) that leave it usable.
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
+#[non_exhaustive]
 pub struct ValidationReport {
     /// Faces whose three corners are collinear or coincident (to within a few ulps in f64):
     /// their corners act as pseudo-sources ([`TriMesh::may_bend_geodesics`](super::TriMesh::may_bend_geodesics)).

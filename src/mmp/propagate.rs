@@ -16,6 +16,7 @@ use std::time::Instant;
 
 /// Options of a propagation.
 #[derive(Clone, Debug, Default, PartialEq)]
+#[non_exhaustive]
 pub struct PropagateOptions {
     /// Stop once every point closer than this is final; farther points are reported as
     /// unreachable (+infinity). `None` propagates over the whole surface.
@@ -37,6 +38,13 @@ impl PropagateOptions {
     /// Stops the propagation at the given distance.
     pub fn with_max_distance(mut self, d: f64) -> Self {
         self.max_distance = Some(d);
+        self
+    }
+
+    /// Keeps a log of every meeting of two wedges (see
+    /// [`record_decisions`](Self::record_decisions)).
+    pub fn with_recorded_decisions(mut self) -> Self {
+        self.record_decisions = true;
         self
     }
 

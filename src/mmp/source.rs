@@ -32,6 +32,7 @@ pub enum SurfacePoint {
 
 /// Why a surface point is not a point of the mesh.
 #[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
 pub enum PointError {
     /// The vertex does not exist.
     #[error("vertex {vertex} is out of range: the mesh has {count} vertices")]

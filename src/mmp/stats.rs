@@ -30,6 +30,7 @@ impl Eq2Counts {
 
 /// Counters of one propagation.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
+#[non_exhaustive]
 pub struct Stats {
     /// Wedges created (emitted, propagated or split off), including those later trimmed away.
     pub wedges_created: u64,

@@ -48,6 +48,7 @@ pub enum Uncertainty {
 
 /// How a backend settled the decisions of one run.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
+#[non_exhaustive]
 pub struct DecisionCounts {
     /// Decisions asked of the backend.
     pub decisions: u64,

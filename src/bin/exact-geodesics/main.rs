@@ -190,10 +190,11 @@ impl Common {
         Ok(Job {
             mesh,
             sources,
-            options: PropagateOptions {
-                max_distance: self.max_distance,
-                record_decisions: false,
-                precision_cap: Some(self.precision_cap),
+            options: {
+                let mut options =
+                    PropagateOptions::default().with_precision_cap(self.precision_cap);
+                options.max_distance = self.max_distance;
+                options
             },
             backend: self.backend,
             require_certified: self.require_certified,

@@ -8,6 +8,7 @@ use thiserror::Error;
 /// Every variant names the file (as given to the reader); text positions are 1-based line
 /// numbers, so that `FILE:LINE:` at the start of a message can be pasted into an editor.
 #[derive(Debug, Error)]
+#[non_exhaustive]
 pub enum MeshIoError {
     /// The file could not be opened, read or written.
     #[error("{file}: {source}")]
