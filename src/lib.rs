@@ -8,6 +8,25 @@
 //! - \[SSK+05\] Surazhsky, Surazhsky, Kirsanov, Gortler, Hoppe, *Fast exact and approximate
 //!   geodesics on meshes*, SIGGRAPH 2005.
 //! - \[MMP87\] Mitchell, Mount, Papadimitriou, *The discrete geodesic problem*, SIAM J. Comput. 1987.
+//!
+//! The same field in two backends: floating point, and exact reals whose every decision is
+//! certified and whose distances can be printed with guaranteed digits.
+//! ```
+//! use exact_geodesics::scalar::Real;
+//! use exact_geodesics::{mesh::shapes, propagate, PropagateOptions, SurfacePoint, VertexId};
+//!
+//! let cube = shapes::cube();
+//! let source = [SurfacePoint::Vertex(VertexId(0))];
+//! let options = PropagateOptions::default();
+//! let float = propagate::<f64>(&cube, &source, &options)?;
+//! let exact = propagate::<Real>(&cube, &source, &options)?;
+//! assert!(exact.is_certified());
+//! let corner = VertexId(6); // opposite v0: sqrt(5) across two faces
+//! assert!((float.vertex_distance(corner) - 5f64.sqrt()).abs() < 1e-12);
+//! let digits = exact.vertex_distance_exact(corner).and_then(|d| d.to_decimal(20));
+//! assert_eq!(digits.as_deref(), Some("2.2360679774997896964"));
+//! # Ok::<(), exact_geodesics::PointError>(())
+//! ```
 #![forbid(unsafe_code)]
 #![deny(missing_docs, rustdoc::broken_intra_doc_links)]
 
@@ -26,3 +45,8 @@ pub use mmp::{
     PseudoSource, Side, Stats, SurfacePoint, TraceError, Wedge,
 };
 pub use scalar::Scalar;
+
+/// The README's code, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

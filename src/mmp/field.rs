@@ -13,6 +13,23 @@ use crate::scalar::Scalar;
 ///
 /// Unreachable points (another component, a vertex no face uses, or beyond the maximum
 /// distance) have distance `f64::INFINITY` and no nearest source.
+///
+/// # Example
+/// Two opposite corners of the unit cube as sources: every other corner is an edge away from
+/// one of them, and a point inside a face is answered as a vertex is.
+/// ```
+/// use exact_geodesics::{mesh::shapes, propagate, FaceId, PropagateOptions, SurfacePoint, VertexId};
+/// let cube = shapes::cube();
+/// let sources = [SurfacePoint::Vertex(VertexId(0)), SurfacePoint::Vertex(VertexId(6))];
+/// let field = propagate::<f64>(&cube, &sources, &PropagateOptions::default())?;
+/// assert_eq!(field.nearest_source(VertexId(6)), Some(1));
+/// for v in [1, 2, 3, 4, 5, 7].map(VertexId) {
+///     assert!((field.vertex_distance(v) - 1.0).abs() < 1e-12);
+/// }
+/// let centre = SurfacePoint::Face { face: FaceId(0), bary: [1.0 / 3.0; 3] };
+/// assert!(field.distance_at(&centre)? < 1.0);
+/// # Ok::<(), exact_geodesics::PointError>(())
+/// ```
 pub struct GeodesicField<'m, S: Scalar> {
     pub(crate) mesh: &'m TriMesh,
     pub(crate) unfolding: Unfolding<S>,
