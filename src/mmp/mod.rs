@@ -19,7 +19,9 @@ mod wedge;
 pub use coverage::{CoverageIssue, CoverageReport};
 pub use field::GeodesicField;
 pub use intersect::intersect;
-pub use propagate::{propagate, propagate_with_progress, Progress, PropagateOptions};
+pub use propagate::{
+    geodesic_distances, propagate, propagate_with_progress, Progress, PropagateOptions,
+};
 pub use source::{PointError, SurfacePoint};
 pub use stats::{Eq2Counts, Eq2Decision, Stats};
 pub use subdivision::{

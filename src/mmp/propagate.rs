@@ -93,6 +93,28 @@ pub fn propagate<'m, S: Scalar>(
     propagate_with_progress(mesh, sources, options, |_| {})
 }
 
+/// The geodesic distance of every vertex, in file order, from the nearest of `sources`
+/// (`f64::INFINITY` where unreachable): [`propagate`] and
+/// [`GeodesicField::vertex_distances`] in one call, for the common case.
+///
+/// # Errors
+/// As [`propagate`].
+///
+/// # Example
+/// ```
+/// use exact_geodesics::{geodesic_distances, mesh::shapes, PropagateOptions, SurfacePoint, VertexId};
+/// let d = geodesic_distances::<f64>(&shapes::cube(), &[SurfacePoint::Vertex(VertexId(0))], &PropagateOptions::default())?;
+/// assert!((d[6] - 5f64.sqrt()).abs() < 1e-12);
+/// # Ok::<(), exact_geodesics::PointError>(())
+/// ```
+pub fn geodesic_distances<S: Scalar>(
+    mesh: &TriMesh,
+    sources: &[SurfacePoint],
+    options: &PropagateOptions,
+) -> Result<Vec<f64>, PointError> {
+    Ok(propagate::<S>(mesh, sources, options)?.vertex_distances())
+}
+
 /// [`propagate`], calling `progress` now and then with how far it got.
 ///
 /// # Errors
