@@ -14,11 +14,12 @@ Needs only the standard library; build the CLI first (cargo build --release).
 """
 
 import argparse
-import csv
 import json
 import os
 import subprocess
 import sys
+
+from results import write_rows
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 BIN = os.path.join(ROOT, "target", "release", "exact-geodesics")
@@ -95,13 +96,7 @@ def main():
                 f"  filter {r['by_filter']:>8}  exact {r['by_exact_stage']:>7}"
                 f"  zeros {r['certified_zeros']:>6}  uncertified {r['uncertified']}"
             )
-    with open(os.path.join(args.out, "backends.json"), "w") as f:
-        json.dump(rows, f, indent=2)
-    with open(os.path.join(args.out, "backends.csv"), "w", newline="") as f:
-        if rows:
-            w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-            w.writeheader()
-            w.writerows(rows)
+    write_rows(args.out, "backends", rows)
     return 1 if failed else 0
 
 

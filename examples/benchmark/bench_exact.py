@@ -12,12 +12,13 @@ library; build the CLI first (cargo build --release).
 """
 
 import argparse
-import csv
 import json
 import os
 import subprocess
 import sys
 import time
+
+from results import write_rows
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 BIN = os.path.join(ROOT, "target", "release", "exact-geodesics")
@@ -111,13 +112,7 @@ def main():
             f"  decisions {r['decisions']:>9}  structure {r['zeros_by_structure']:>7}"
             f"  normal form {r['zeros_by_normal_form']:>5}  uncertified {r['uncertified']}"
         )
-    with open(os.path.join(args.out, "exact.json"), "w") as f:
-        json.dump(rows, f, indent=2)
-    fields = sorted({k for r in rows for k in r}, key=lambda k: (k != "mesh", k))
-    with open(os.path.join(args.out, "exact.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=fields)
-        w.writeheader()
-        w.writerows(rows)
+    write_rows(args.out, "exact", rows)
     return 1 if failed else 0
 
 

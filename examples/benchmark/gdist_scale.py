@@ -16,8 +16,6 @@ Writes DIR/gdist_scale.csv and DIR/gdist_scale.json and prints a summary per mod
 """
 
 import argparse
-import csv
-import json
 import os
 import sys
 
@@ -25,6 +23,7 @@ import gdist
 import numpy as np
 
 from gdist_worker import UNREACHED_THRESHOLD, load_obj
+from results import write_rows
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MODELS = os.path.join(ROOT, "..", "shared", "models")
@@ -93,13 +92,7 @@ def main():
             f" {worst['vertices_off_by_1e-9']} vertices off by 1e-9,"
             f" {worst['newly_unreachable']} unreachable"
         )
-    with open(os.path.join(args.out, "gdist_scale.json"), "w") as f:
-        json.dump(rows, f, indent=2)
-    with open(os.path.join(args.out, "gdist_scale.csv"), "w", newline="") as f:
-        if rows:
-            w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-            w.writeheader()
-            w.writerows(rows)
+    write_rows(args.out, "gdist_scale", rows)
     return 0
 
 

@@ -188,15 +188,7 @@ fn cmp(a: f64, b: f64) -> Ordering {
 }
 
 impl Scalar for Adaptive {
-    type Kept<T: Clone + std::fmt::Debug> = ();
-
-    #[inline(always)]
-    fn keep<T: Clone + std::fmt::Debug>(_make: impl FnOnce() -> T) -> Self::Kept<T> {}
-
-    #[inline(always)]
-    fn kept<T: Clone + std::fmt::Debug>(_kept: &Self::Kept<T>) -> Option<T> {
-        None
-    }
+    super::keeps_no_values!();
 
     #[inline(always)]
     fn sign(&self) -> Sign {

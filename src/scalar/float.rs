@@ -51,15 +51,7 @@ impl Field for f64 {
 }
 
 impl Scalar for f64 {
-    type Kept<T: Clone + std::fmt::Debug> = ();
-
-    #[inline(always)]
-    fn keep<T: Clone + std::fmt::Debug>(_make: impl FnOnce() -> T) -> Self::Kept<T> {}
-
-    #[inline(always)]
-    fn kept<T: Clone + std::fmt::Debug>(_kept: &Self::Kept<T>) -> Option<T> {
-        None
-    }
+    super::keeps_no_values!();
 
     #[inline(always)]
     fn orientation(p: [&f64; 2], q: [&f64; 2], r: [&f64; 2]) -> Sign {

@@ -28,6 +28,23 @@ macro_rules! ops_by_reference_for_copy {
     )*};
 }
 
+/// The [`Scalar::Kept`] items of a number type that keeps no values: its values are numbers,
+/// compared by value, and the engine's kept-value paths compile away.
+macro_rules! keeps_no_values {
+    () => {
+        type Kept<T: Clone + std::fmt::Debug> = ();
+
+        #[inline(always)]
+        fn keep<T: Clone + std::fmt::Debug>(_make: impl FnOnce() -> T) -> Self::Kept<T> {}
+
+        #[inline(always)]
+        fn kept<T: Clone + std::fmt::Debug>(_kept: &Self::Kept<T>) -> Option<T> {
+            None
+        }
+    };
+}
+pub(crate) use keeps_no_values;
+
 mod adaptive;
 mod audit;
 mod backend;
