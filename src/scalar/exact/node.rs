@@ -125,9 +125,13 @@ fn enclose(r: &Rational) -> Interval {
 
 impl Node {
     pub(crate) fn leaf(r: Rational) -> Arc<Node> {
+        Arc::new(Node::leaf_node(r))
+    }
+
+    fn leaf_node(r: Rational) -> Node {
         let mut hasher = std::hash::DefaultHasher::new();
         r.hash(&mut hasher);
-        Arc::new(Node {
+        Node {
             hash: hasher.finish(),
             structural_zero: false,
             filter: enclose(&r),
@@ -139,7 +143,7 @@ impl Node {
             op: Op::Leaf(r),
             cache: Mutex::new(None),
             normal_form: Mutex::new(None),
-        })
+        }
     }
 
     pub(crate) fn rational(&self) -> Option<&Rational> {
@@ -150,6 +154,10 @@ impl Node {
     }
 
     fn build(op: Op, filter: Interval, log_u: f64, log_l: f64, has_sqrt: bool) -> Arc<Node> {
+        Arc::new(Node::operation(op, filter, log_u, log_l, has_sqrt))
+    }
+
+    fn operation(op: Op, filter: Interval, log_u: f64, log_l: f64, has_sqrt: bool) -> Node {
         let divisors_unchecked = match &op {
             Op::Div(a, b) => {
                 a.divisors_unchecked
@@ -161,7 +169,7 @@ impl Node {
                 children.any(|c| c.divisors_unchecked)
             }
         };
-        Arc::new(Node {
+        Node {
             hash: op_hash(&op),
             structural_zero: false,
             op,
@@ -173,7 +181,7 @@ impl Node {
             divisors_checked: OnceLock::new(),
             cache: Mutex::new(None),
             normal_form: Mutex::new(None),
-        })
+        }
     }
 
     /// `x - x` or `0 * x`: zero wherever `x` has a value. Without divisors to check that is the
@@ -182,18 +190,14 @@ impl Node {
     /// filter is the point zero, so that the sign is certified zero once they are shown
     /// non-zero (a zero times a division by zero stays undefined).
     fn zero_of(op: Op) -> Arc<Node> {
-        if !op_children(&op).any(|c| c.divisors_unchecked) {
-            let zero = Node::leaf(Rational::new());
-            if op_children(&op).all(|c| c.rational().is_some()) {
-                return zero;
-            }
-            let mut zero = Arc::into_inner(zero).expect("a new node");
-            zero.structural_zero = true;
-            return Arc::new(zero);
-        }
-        let has_sqrt = op_children(&op).any(|c| c.has_sqrt);
-        let zero = Node::build(op, Interval::point(0.0), f64::NEG_INFINITY, 0.0, has_sqrt);
-        let mut zero = Arc::into_inner(zero).expect("a new node");
+        let mut zero = if op_children(&op).any(|c| c.divisors_unchecked) {
+            let has_sqrt = op_children(&op).any(|c| c.has_sqrt);
+            Node::operation(op, Interval::point(0.0), f64::NEG_INFINITY, 0.0, has_sqrt)
+        } else if op_children(&op).all(|c| c.rational().is_some()) {
+            return Node::leaf(Rational::new());
+        } else {
+            Node::leaf_node(Rational::new())
+        };
         zero.structural_zero = true;
         Arc::new(zero)
     }
