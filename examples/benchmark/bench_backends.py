@@ -19,11 +19,8 @@ import os
 import subprocess
 import sys
 
-from results import write_rows
+from common import BIN, MODELS, ROOT, write_rows
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BIN = os.path.join(ROOT, "target", "release", "exact-geodesics")
-MODELS = os.path.join(ROOT, "..", "shared", "models")
 
 
 def cases():

@@ -18,24 +18,10 @@ import subprocess
 import sys
 import time
 
-from results import write_rows
+from common import BIN, MODELS, PAPER_TABLE1, ROOT, write_rows
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BIN = os.path.join(ROOT, "target", "release", "exact-geodesics")
-MODELS = os.path.join(ROOT, "..", "shared", "models")
-DEFAULT_MODELS = [
-    "unit_sphere",
-    "spot",
-    "teapot_welded",
-    "cad_featuretype",
-    "fandisk",
-    "paper-table1/sphere_uniform",
-    "paper-table1/sphere_nonuniform",
-    "paper-table1/eight_uniform",
-    "paper-table1/eight_nonuniform",
-    "paper-table1/teapot_uniform",
-    "paper-table1/teapot_nonuniform",
-]
+DEFAULT_MODELS = ["unit_sphere", "spot", "teapot_welded", "cad_featuretype", "fandisk"]
+DEFAULT_MODELS += PAPER_TABLE1
 
 
 def cases(models):

@@ -23,19 +23,9 @@ import gdist
 import numpy as np
 
 from gdist_worker import UNREACHED_THRESHOLD, load_obj
-from results import write_rows
+from common import MODELS, PAPER_TABLE1, ROOT, write_rows
 
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-MODELS = os.path.join(ROOT, "..", "shared", "models")
-DEFAULT_MODELS = [
-    "paper-table1/sphere_uniform",
-    "paper-table1/sphere_nonuniform",
-    "paper-table1/eight_uniform",
-    "paper-table1/eight_nonuniform",
-    "paper-table1/teapot_uniform",
-    "paper-table1/teapot_nonuniform",
-    "spot",
-]
+DEFAULT_MODELS = PAPER_TABLE1 + ["spot"]
 
 
 def unit_cube(vertices):
