@@ -401,11 +401,11 @@ impl<S: Scalar> Engine<'_, S> {
                 Owner::New => {
                     if S::within(&zero, &piece.lo, &piece.hi, length) {
                         let d = S::kept(&kept.at_ends[0]).unwrap_or_else(|| mine.at(&zero));
-                        self.improve_vertex(v0, d, w.source);
+                        self.offer_vertex(v0, d, w);
                     }
                     if S::within(length, &piece.lo, &piece.hi, length) {
                         let d = S::kept(&kept.at_ends[1]).unwrap_or_else(|| mine.at(length));
-                        self.improve_vertex(v1, d, w.source);
+                        self.offer_vertex(v1, d, w);
                     }
                     let piece_kept = if anchored(kept) {
                         kept.trimmed(keeps(w, &piece.lo, &piece.hi))

@@ -135,15 +135,16 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     let started = Instant::now();
     S::begin_run(options.precision_cap);
     S::take_counts();
-    let mut engine = Engine::new(mesh, options);
-    for (k, point) in sources.iter().enumerate() {
-        engine.emit_source(k, point);
+    let mut engine = Engine::new(mesh, options, sources);
+    for k in 0..engine.sources.len() {
+        let point = engine.sources[k];
+        engine.emit_source(k, &point);
     }
     engine.run(&mut progress);
     engine.stats.propagation_seconds = started.elapsed().as_secs_f64();
     engine.stats.backend = S::take_counts();
     S::locate(Site::ANYWHERE);
-    Ok(engine.finish(sources))
+    Ok(engine.finish())
 }
 
 /// A wedge about to be born on an edge: the edge, the ends of its range (unsorted), its
@@ -206,6 +207,7 @@ impl Ord for Event {
 pub(crate) struct Engine<'m, S: Scalar> {
     pub(crate) mesh: &'m TriMesh,
     pub(crate) unfolding: Unfolding<S>,
+    sources: Vec<SurfacePoint>,
     pub(crate) slots: Vec<Slot<S>>,
     pub(crate) free: Vec<u32>,
     pub(crate) lists: Vec<Vec<u32>>,
@@ -222,7 +224,7 @@ pub(crate) struct Engine<'m, S: Scalar> {
 }
 
 impl<'m, S: Scalar> Engine<'m, S> {
-    fn new(mesh: &'m TriMesh, options: &PropagateOptions) -> Self {
+    fn new(mesh: &'m TriMesh, options: &PropagateOptions, sources: Vec<SurfacePoint>) -> Self {
         let unfolding = Unfolding::new(mesh);
         let max_distance = options
             .max_distance
@@ -230,6 +232,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         Engine {
             mesh,
             unfolding,
+            sources,
             slots: Vec::new(),
             free: Vec::new(),
             lists: vec![Vec::new(); mesh.edge_count()],
@@ -293,7 +296,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         });
     }
 
-    fn finish(self, sources: Vec<SurfacePoint>) -> GeodesicField<'m, S> {
+    fn finish(self) -> GeodesicField<'m, S> {
         let max = self.max_distance;
         let mut vertices = self.vertices;
         for v in vertices.iter_mut() {
@@ -321,7 +324,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         GeodesicField::new(
             self.mesh,
             self.unfolding,
-            sources,
+            self.sources,
             wedges,
             vertices,
             self.stats,
@@ -375,6 +378,14 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 }
             }
         }
+    }
+
+    /// A wedge's distance `d` at the vertex `v`, offered to it: no lower than its pseudo-source's
+    /// straight line to `v` in space, where the backend repairs rounding ([`Scalar::at_least`]).
+    pub(crate) fn offer_vertex(&mut self, v: VertexId, d: S, w: &Wedge<S>) {
+        let (mesh, unfolding, sources) = (self.mesh, &self.unfolding, &self.sources);
+        let d = S::at_least(d, || unfolding.straight_bound(mesh, w, v, sources));
+        self.improve_vertex(v, d, w.source);
     }
 
     /// The initial wedges of a source [SSK+05 §4]: on every edge of every face containing it.
@@ -492,10 +503,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let g = mesh.face_edges(f)[(corner + 1) % 3];
             let side = mesh.side_of(g, f).expect("edge of the face");
             // None only for an opposite edge of length zero, which carries no wedge.
-            let Some((x, y)) = self.unfolding.apex(mesh, g, side).cloned() else {
+            let Some(at) = self.unfolding.apex_point(mesh, g, side) else {
                 continue;
             };
-            let at = Planar { x, y };
             // Only a degenerate face has a corner on its opposite edge's line.
             if mesh.is_degenerate_face(f) && self.unfolding.is_inside(g, &at) {
                 beyond.extend(mesh.edge_faces(g).filter(|&h| h != f));
@@ -628,14 +638,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 return None;
             }
             let distance = S::kept(&kept.at_ends[i])?;
-            let (x, y) = self
-                .unfolding
-                .apex(mesh, g, mesh.side_of(g, face)?)?
-                .clone();
-            Some(Anchor {
-                point: Planar { x, y },
-                distance,
-            })
+            let point = self.unfolding.apex_point(mesh, g, mesh.side_of(g, face)?)?;
+            Some(Anchor { point, distance })
         };
         let (near, far) = (layout.wing.near, layout.wing.far);
         let to_near = |p: &Planar<S>| layout.to_near(p);
@@ -688,7 +692,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             children[1] = Some((far, positions, layout.to_far(&s), kept));
         }
         if let Some((v, d)) = apex {
-            self.improve_vertex(v, d, w.source);
+            self.offer_vertex(v, d, w);
         }
         for (g, [p0, p1], at, mut kept) in children.into_iter().flatten() {
             let (b0, b1) = if p0.compare(&p1) == Ordering::Greater {

@@ -6,7 +6,7 @@
 use super::field::GeodesicField;
 use super::query::{Best, Via};
 use super::source::{PointError, SurfacePoint};
-use super::unfold::{FaceLayout, Planar};
+use super::unfold::{Apex, FaceLayout, Planar};
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{EdgeId, FaceId, VertexId};
 use crate::scalar::{Scalar, Sign};
@@ -264,11 +264,11 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 continue;
             };
             // No apex on an opposite edge of length zero, which carries no wedge.
-            let Some((x, y)) = self.unfolding.apex(self.mesh, edge, side).cloned() else {
+            let Some(at) = self.unfolding.apex_point(self.mesh, edge, side) else {
                 continue;
             };
             let beyond = |w: &Wedge<S>| !own(w) && w.tau.index() != side;
-            consider(self.best_through_edge(edge, face, &Planar { x, y }, beyond));
+            consider(self.best_through_edge(edge, face, &at, beyond));
         }
         for &edge in self.mesh.vertex_edges(v) {
             let e = self.mesh.edge(edge);
@@ -301,7 +301,8 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 w.source_x.compare(&at.x) != Ordering::Greater
             };
         }
-        let Some((cx, h)) = self.unfolding.apex(self.mesh, w.edge, w.tau.index()) else {
+        let Some(Apex { x: cx, h, .. }) = self.unfolding.apex(self.mesh, w.edge, w.tau.index())
+        else {
             return false;
         };
         // u runs along the edge away from the vertex, c to the apex, d to the pseudo-source.
@@ -459,7 +460,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                         layout.to_near(&s),
                     )
                 } else {
-                    let (ux, uy) = (layout.length.clone() - &cx, zero.clone() - &cy);
+                    let (ux, uy) = (layout.apex_far_x.clone(), zero.clone() - &cy);
                     let u = clamp(cross(r.x.clone() - &cx, r.y.clone() - &cy) / cross(ux, uy));
                     (layout.wing.far, layout.far_position(&u), layout.to_far(&s))
                 }
