@@ -180,6 +180,7 @@ fn table_rows_carry_the_counts_and_the_ratio() {
     let t2 = Table2Row::new("ico", Backend::Adaptive, &shape, &counts);
     assert_eq!((t1.source, t1.faces, t1.edges), (3, 80, 120));
     assert_eq!(t1.wedges_mean, t2.wedges_mean);
+    assert_eq!(t1.seconds, t2.seconds);
     assert!(close(
         t2.wedges_per_unit_length,
         t1.wedges_mean / t2.edge_length_mean
