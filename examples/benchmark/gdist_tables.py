@@ -7,11 +7,11 @@ from the directory those ran in (their model paths are relative to it):
 
 For every model and source vertex of DIR/table1.json and DIR/table2.json, the model is
 normalized into the unit cube exactly as the experiment normalizes it, gdist computes the
-distances from the source to every vertex (`compute_gdist`, timed in CPU seconds, its own mesh
-construction included), and our CLI's `distance` computes them on the same normalized mesh in
-the reference backend. Writes DIR/table1_gdist.{csv,json} and DIR/table2_gdist.{csv,json},
-one row per model and source in the columns of section6_tables.py, which prints the tables
-merged. gdist gives distances only: its wedge columns are empty. `gen:` models are skipped
+distances from the source to every vertex (`compute_gdist`, its own mesh construction included,
+timed in wall-clock seconds as our `seconds` are, so that a busy machine slows both alike), and
+our CLI's `distance` computes them on the same normalized mesh in the reference backend.
+Writes DIR/table1_gdist.{csv,json} and DIR/table2_gdist.{csv,json}, one row per model and
+source in the columns of section6_tables.py, which prints the tables merged. gdist gives distances only: its wedge columns are empty. `gen:` models are skipped
 (this script reads OBJ files only). Exit status 1 if a model failed (the others still run).
 """
 
@@ -56,9 +56,9 @@ def measure(binary, model, source, backend, scratch):
     unit = unit_cube(vertices, triangles)
     normalized = os.path.join(scratch, "unit.obj")
     write_obj(normalized, unit, triangles)
-    start = time.process_time()
+    start = time.perf_counter()
     theirs = gdist_distances(unit, triangles, source)
-    seconds = time.process_time() - start
+    seconds = time.perf_counter() - start
     ours = our_distances(binary, normalized, source, backend)
     return seconds, compare_distances(ours, theirs.tolist())
 
