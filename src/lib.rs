@@ -41,8 +41,9 @@ pub mod scalar;
 
 pub use mesh::{EdgeId, FaceId, MeshError, TriMesh, ValidationReport, VertexId};
 pub use mmp::{
-    geodesic_distances, propagate, propagate_with_progress, GeodesicField, GeodesicPath,
-    PointError, PropagateOptions, PseudoSource, Side, Stats, SurfacePoint, TraceError, Wedge,
+    geodesic_distances, propagate, propagate_shared, propagate_with_progress, GeodesicField,
+    GeodesicPath, PointError, PropagateOptions, PseudoSource, Side, Stats, SurfacePoint,
+    TraceError, Wedge,
 };
 pub use scalar::Scalar;
 

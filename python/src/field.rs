@@ -7,14 +7,13 @@ use exact_geodesics::mesh::EdgeId;
 use exact_geodesics::scalar::exact::set_precision_cap;
 use exact_geodesics::scalar::{Adaptive, Backend, Real, Scalar};
 use exact_geodesics::{
-    propagate, GeodesicField as Field, PointError, PropagateOptions, PseudoSource, SurfacePoint,
-    TraceError, TriMesh, VertexId, Wedge,
+    propagate_shared, GeodesicField as Field, PointError, PropagateOptions, PseudoSource,
+    SurfacePoint, TraceError, TriMesh, VertexId, Wedge,
 };
 use numpy::{PyArray1, PyArray2};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
-use self_cell::self_cell;
 use std::sync::Arc;
 
 /// A field of any backend.
@@ -35,30 +34,21 @@ macro_rules! on_field {
     };
 }
 
-impl<'m> AnyField<'m> {
-    /// Propagates from `sources` with the backend's number type.
+impl AnyField<'static> {
+    /// Propagates from `sources` with the backend's number type, on the shared mesh.
     pub fn propagate(
-        mesh: &'m TriMesh,
+        mesh: &Arc<TriMesh>,
         backend: Backend,
         sources: &[SurfacePoint],
         options: &PropagateOptions,
     ) -> Result<Self, PointError> {
         Ok(match backend {
-            Backend::F64 => AnyField::F64(propagate(mesh, sources, options)?),
-            Backend::Adaptive => AnyField::Adaptive(propagate(mesh, sources, options)?),
-            Backend::Exact => AnyField::Exact(propagate(mesh, sources, options)?),
+            Backend::F64 => AnyField::F64(propagate_shared(mesh, sources, options)?),
+            Backend::Adaptive => AnyField::Adaptive(propagate_shared(mesh, sources, options)?),
+            Backend::Exact => AnyField::Exact(propagate_shared(mesh, sources, options)?),
         })
     }
 }
-
-self_cell!(
-    /// A mesh and a field that borrows it.
-    pub struct OwnedField {
-        owner: Arc<TriMesh>,
-        #[covariant]
-        dependent: AnyField,
-    }
-);
 
 /// The geodesic distance field of a set of sources (``GeodesicSolver.propagate``).
 ///
@@ -66,13 +56,13 @@ self_cell!(
 /// at distance ``inf``.
 #[pyclass(module = "exact_geodesics", frozen)]
 pub struct GeodesicField {
-    field: OwnedField,
+    field: AnyField<'static>,
     backend: Backend,
     precision_cap: Option<u32>,
 }
 
 impl GeodesicField {
-    pub fn new(field: OwnedField, backend: Backend, precision_cap: Option<u32>) -> Self {
+    pub fn new(field: AnyField<'static>, backend: Backend, precision_cap: Option<u32>) -> Self {
         GeodesicField {
             field,
             backend,
@@ -81,7 +71,7 @@ impl GeodesicField {
     }
 
     fn mesh(&self) -> &TriMesh {
-        self.field.borrow_owner()
+        on_field!(&self.field, f => f.mesh())
     }
 
     /// Queries of the exact backend decide signs at the running thread's precision cap: give
@@ -101,7 +91,7 @@ impl GeodesicField {
     /// unreachable), in the order of the solver's vertices.
     #[getter]
     fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        let distances = on_field!(self.field.borrow_dependent(), f => f.vertex_distances());
+        let distances = on_field!(&self.field, f => f.vertex_distances());
         PyArray1::from_vec(py, distances)
     }
 
@@ -112,8 +102,7 @@ impl GeodesicField {
         let nearest = (0..self.mesh().vertex_count())
             .map(|v| {
                 let v = VertexId(v as u32);
-                on_field!(self.field.borrow_dependent(), f => f.nearest_source(v))
-                    .map_or(-1, |k| k as i64)
+                on_field!(&self.field, f => f.nearest_source(v)).map_or(-1, |k| k as i64)
             })
             .collect();
         PyArray1::from_vec(py, nearest)
@@ -122,7 +111,7 @@ impl GeodesicField {
     /// The sources as the library validated them, each as ``(kind, index, parameters)``.
     #[getter]
     fn sources<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
-        let sources = on_field!(self.field.borrow_dependent(), f => f.sources());
+        let sources = on_field!(&self.field, f => f.sources());
         let items = sources
             .iter()
             .map(|p| input::simplex(py, p))
@@ -141,7 +130,7 @@ impl GeodesicField {
     /// ``False`` when a decision reached the precision cap unproved (see ``stats()``).
     #[getter]
     fn is_certified(&self) -> bool {
-        on_field!(self.field.borrow_dependent(), f => f.is_certified())
+        on_field!(&self.field, f => f.is_certified())
     }
 
     /// The geodesic distance from the nearest source to any surface point (``inf`` if
@@ -151,7 +140,7 @@ impl GeodesicField {
     fn distance_at(&self, point: &Bound<'_, PyAny>) -> PyResult<f64> {
         let point = input::surface_point(self.mesh(), point)?;
         self.query_cap()?;
-        on_field!(self.field.borrow_dependent(), f => f.distance_at(&point)).map_err(value_error)
+        on_field!(&self.field, f => f.distance_at(&point)).map_err(value_error)
     }
 
     /// The shortest path from ``target`` back to its nearest source [LZT §2].
@@ -161,13 +150,10 @@ impl GeodesicField {
     fn path(&self, py: Python<'_>, target: &Bound<'_, PyAny>) -> PyResult<GeodesicPath> {
         let target = input::surface_point(self.mesh(), target)?;
         self.query_cap()?;
-        let path =
-            on_field!(self.field.borrow_dependent(), f => f.trace_back(&target)).map_err(|e| {
-                match e {
-                    TraceError::Lost { .. } => PyRuntimeError::new_err(e.to_string()),
-                    e => value_error(e),
-                }
-            })?;
+        let path = on_field!(&self.field, f => f.trace_back(&target)).map_err(|e| match e {
+            TraceError::Lost { .. } => PyRuntimeError::new_err(e.to_string()),
+            e => value_error(e),
+        })?;
         let simplices = path
             .simplices
             .iter()
@@ -199,7 +185,7 @@ impl GeodesicField {
     ) -> PyResult<Bound<'py, PyList>> {
         let mesh = self.mesh();
         let edge = edge_id(mesh, edge)?;
-        let dicts = on_field!(self.field.borrow_dependent(), f => f
+        let dicts = on_field!(&self.field, f => f
             .wedges(edge)
             .iter()
             .map(|w| wedge_dict(py, w))
@@ -212,14 +198,14 @@ impl GeodesicField {
     /// peaks, seconds, and how the backend settled its decisions (``backend``: for ``exact``,
     /// certified zeros by proof and ``uncertified`` decisions with their places).
     fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let stats = on_field!(self.field.borrow_dependent(), f => f.stats());
+        let stats = on_field!(&self.field, f => f.stats());
         let json =
             serde_json::to_string(stats).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
         py.import("json")?.call_method1("loads", (json,))
     }
 
     fn __repr__(&self) -> String {
-        let reached = on_field!(self.field.borrow_dependent(), f => f
+        let reached = on_field!(&self.field, f => f
             .vertex_distances()
             .iter()
             .filter(|d| d.is_finite())

@@ -5,6 +5,7 @@
 //! [`MeshError`], usable oddities a [`ValidationReport`].
 
 mod error;
+mod handle;
 mod ids;
 pub mod io;
 pub mod shapes;
@@ -13,6 +14,7 @@ mod validation;
 pub(crate) mod vector;
 
 pub use error::MeshError;
+pub use handle::MeshHandle;
 pub use ids::{EdgeId, FaceId, VertexId};
 pub use topology::{Edge, Wing};
 pub use validation::{DuplicateFace, NonManifoldEdge, ValidationReport};

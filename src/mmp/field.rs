@@ -5,8 +5,9 @@ use super::source::SurfacePoint;
 use super::stats::Stats;
 use super::unfold::Unfolding;
 use super::wedge::Wedge;
-use crate::mesh::{EdgeId, TriMesh, VertexId};
+use crate::mesh::{EdgeId, MeshHandle, TriMesh, VertexId};
 use crate::scalar::Scalar;
+use std::sync::Arc;
 
 /// The geodesic distance field of a set of sources: the 1D subdivision of the edges into final
 /// wedges [LZT §2] and everything that can be read from it.
@@ -30,8 +31,13 @@ use crate::scalar::Scalar;
 /// assert!(field.distance_at(&centre)? < 1.0);
 /// # Ok::<(), exact_geodesics::PointError>(())
 /// ```
+///
+/// A field borrows its mesh (`'m`) when made by [`propagate`](crate::propagate); one made by
+/// [`propagate_shared`](crate::propagate_shared) shares it (`GeodesicField<'static, S>`) and can be
+/// stored beside it, cloned and sent to other threads.
+#[derive(Clone, Debug)]
 pub struct GeodesicField<'m, S: Scalar> {
-    pub(crate) mesh: &'m TriMesh,
+    mesh: MeshHandle<'m>,
     pub(crate) unfolding: Unfolding<S>,
     pub(crate) sources: Vec<SurfacePoint>,
     pub(crate) wedges: Vec<Vec<Wedge<S>>>,
@@ -49,7 +55,7 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
         stats: Stats,
     ) -> Self {
         GeodesicField {
-            mesh,
+            mesh: MeshHandle::Borrowed(mesh),
             unfolding,
             sources,
             wedges,
@@ -59,8 +65,22 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     }
 
     /// The mesh the field lives on.
-    pub fn mesh(&self) -> &'m TriMesh {
-        self.mesh
+    #[inline]
+    pub fn mesh(&self) -> &TriMesh {
+        &self.mesh
+    }
+
+    /// The same field holding `mesh`, shared, instead of its borrow: it then has no lifetime of
+    /// its own. `None` if `mesh` is not the mesh the field was propagated on (the same object).
+    pub fn into_shared(self, mesh: Arc<TriMesh>) -> Option<GeodesicField<'static, S>> {
+        std::ptr::eq(&*self.mesh, &*mesh).then(|| GeodesicField {
+            mesh: MeshHandle::Shared(mesh),
+            unfolding: self.unfolding,
+            sources: self.sources,
+            wedges: self.wedges,
+            vertices: self.vertices,
+            stats: self.stats,
+        })
     }
 
     /// The sources, validated and in canonical form, in the order given.

@@ -20,7 +20,8 @@ pub use coverage::{CoverageIssue, CoverageReport};
 pub use field::GeodesicField;
 pub use intersect::intersect;
 pub use propagate::{
-    geodesic_distances, propagate, propagate_with_progress, Progress, PropagateOptions,
+    geodesic_distances, propagate, propagate_shared, propagate_with_progress, Progress,
+    PropagateOptions,
 };
 pub use source::{PointError, SurfacePoint};
 pub use stats::{Eq2Counts, Eq2Decision, Stats};

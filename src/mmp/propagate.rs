@@ -12,6 +12,7 @@ use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
 use crate::scalar::{Scalar, Sign, Site};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
+use std::sync::Arc;
 use std::time::Instant;
 
 /// Options of a propagation.
@@ -91,6 +92,33 @@ pub fn propagate<'m, S: Scalar>(
     options: &PropagateOptions,
 ) -> Result<GeodesicField<'m, S>, PointError> {
     propagate_with_progress(mesh, sources, options, |_| {})
+}
+
+/// [`propagate`] on a shared mesh: the field holds the `Arc` instead of a borrow, so it can be
+/// stored beside the mesh, cloned, sent to other threads and queried for as long as it lives.
+///
+/// # Errors
+/// As [`propagate`].
+///
+/// # Example
+/// ```
+/// use exact_geodesics::{mesh::shapes, propagate_shared, PropagateOptions, SurfacePoint, VertexId};
+/// use std::sync::Arc;
+/// let cube = Arc::new(shapes::cube());
+/// let field = propagate_shared::<f64>(&cube, &[SurfacePoint::Vertex(VertexId(0))], &PropagateOptions::default())?;
+/// let worker = std::thread::spawn(move || field.vertex_distance(VertexId(6)));
+/// assert!((worker.join().unwrap() - 5f64.sqrt()).abs() < 1e-12);
+/// # Ok::<(), exact_geodesics::PointError>(())
+/// ```
+pub fn propagate_shared<S: Scalar>(
+    mesh: &Arc<TriMesh>,
+    sources: &[SurfacePoint],
+    options: &PropagateOptions,
+) -> Result<GeodesicField<'static, S>, PointError> {
+    let field = propagate::<S>(mesh, sources, options)?;
+    Ok(field
+        .into_shared(Arc::clone(mesh))
+        .expect("propagated on this mesh"))
 }
 
 /// The geodesic distance of every vertex, in file order, from the nearest of `sources`

@@ -48,7 +48,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// # Errors
     /// [`PointError`] if the point is not a point of the mesh.
     pub fn distance_at(&self, point: &SurfacePoint) -> Result<f64, PointError> {
-        let point = point.validated(self.mesh)?;
+        let point = point.validated(self.mesh())?;
         Ok(self.best_at(&point).map_or(f64::INFINITY, |b| {
             self.unfolding.to_model(b.distance.to_f64())
         }))
@@ -60,7 +60,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// # Errors
     /// [`PointError`] if the point is not a point of the mesh.
     pub fn distance_at_exact(&self, point: &SurfacePoint) -> Result<Option<S>, PointError> {
-        let point = point.validated(self.mesh)?;
+        let point = point.validated(self.mesh())?;
         Ok(self.best_at(&point).map(|b| self.to_model(&b.distance)))
     }
 
@@ -70,7 +70,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// # Errors
     /// [`PointError`] if the point is not a point of the mesh.
     pub fn nearest_source_at(&self, point: &SurfacePoint) -> Result<Option<usize>, PointError> {
-        let point = point.validated(self.mesh)?;
+        let point = point.validated(self.mesh())?;
         Ok(self.best_at(&point).and_then(|b| match b.via {
             Via::Wedge { edge, wedge, .. } => Some(self.wedges[edge.index()][wedge].source),
             Via::Vertex(v) => self.nearest_source(v),
@@ -85,10 +85,10 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 via: Via::Vertex(v),
             });
         }
-        let p = self.unfolding.position(self.mesh, point);
+        let p = self.unfolding.position(self.mesh(), point);
         let mut best = None;
-        for face in point.faces(self.mesh) {
-            for edge in self.mesh.face_edges(face) {
+        for face in point.faces(self.mesh()) {
+            for edge in self.mesh().face_edges(face) {
                 let at = match *point {
                     // A point of the edge is on its line exactly, not at a rounded height.
                     SurfacePoint::Edge { edge: own, t }
@@ -99,7 +99,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                             y: S::zero(),
                         })
                     }
-                    _ => self.unfolding.planar(self.mesh, edge, &p),
+                    _ => self.unfolding.planar(self.mesh(), edge, &p),
                 };
                 let Some(at) = at else {
                     continue; // An edge of length zero carries no wedge.
@@ -108,9 +108,11 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     keep_better(&mut best, found);
                 }
             }
-            for v in self.mesh.face(face) {
+            for v in self.mesh().face(face) {
                 if let Some(d) = &self.vertices[v.index()] {
-                    let q = self.unfolding.position(self.mesh, &SurfacePoint::Vertex(v));
+                    let q = self
+                        .unfolding
+                        .position(self.mesh(), &SurfacePoint::Vertex(v));
                     let gap = [0, 1, 2].map(|i| q[i].clone() - &p[i]);
                     let len = (gap[0].clone() * &gap[0]
                         + gap[1].clone() * &gap[1]
@@ -138,7 +140,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         at: &Planar<S>,
         accept: impl Fn(&Wedge<S>) -> bool,
     ) -> Option<Best<S>> {
-        let side = self.mesh.side_of(edge, face)?;
+        let side = self.mesh().side_of(edge, face)?;
         let length = self.unfolding.length(edge);
         let mut best = None;
         for (i, w) in self.wedges[edge.index()].iter().enumerate() {

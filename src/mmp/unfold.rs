@@ -27,6 +27,7 @@ pub struct Planar<S> {
 /// Coordinates are multiplied by the mesh's [`unit_scale`](TriMesh::unit_scale) (a power of
 /// two, exactly), so every length here is in scaled units; [`Unfolding::to_model`] and
 /// [`Unfolding::scaled_from_model`] convert distances to and from the model's units.
+#[derive(Clone, Debug)]
 pub(crate) struct Unfolding<S> {
     edge_length: Vec<S>,
     /// Whether the edge has length zero (its ends coincide): no wedge lives on it, and no
