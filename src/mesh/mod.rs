@@ -128,6 +128,9 @@ impl TriMesh {
     }
 
     /// The position of a vertex.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     #[inline]
     pub fn position(&self, v: VertexId) -> [f64; 3] {
         self.positions[v.index()]
@@ -139,6 +142,9 @@ impl TriMesh {
     }
 
     /// The corners of a face.
+    ///
+    /// # Panics
+    /// If `f` is not a face of the mesh.
     #[inline]
     pub fn face(&self, f: FaceId) -> [VertexId; 3] {
         let c = self.faces[f.index()];
@@ -146,6 +152,9 @@ impl TriMesh {
     }
 
     /// The edge with the given id.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     #[inline]
     pub fn edge(&self, e: EdgeId) -> &Edge {
         &self.topology.edges[e.index()]
@@ -157,12 +166,18 @@ impl TriMesh {
     }
 
     /// Edge `i` of face `f`: the one from corner `i` to corner `i + 1` (mod 3).
+    ///
+    /// # Panics
+    /// If `f` is not a face of the mesh.
     #[inline]
     pub fn face_edges(&self, f: FaceId) -> [EdgeId; 3] {
         self.topology.face_edges[f.index()]
     }
 
     /// The edge joining two vertices, if there is one.
+    ///
+    /// # Panics
+    /// If `a` or `b` is not a vertex of the mesh.
     pub fn edge_between(&self, a: VertexId, b: VertexId) -> Option<EdgeId> {
         self.topology
             .vertex_edges(a)
@@ -172,16 +187,25 @@ impl TriMesh {
     }
 
     /// Faces incident to a vertex.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn vertex_faces(&self, v: VertexId) -> &[FaceId] {
         self.topology.vertex_faces(v)
     }
 
     /// Edges incident to a vertex.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn vertex_edges(&self, v: VertexId) -> &[EdgeId] {
         self.topology.vertex_edges(v)
     }
 
     /// Sum of the face angles at a vertex, in radians (0 for a vertex no face uses).
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn angle_sum(&self, v: VertexId) -> f64 {
         self.topology.angle_sum[v.index()]
     }
@@ -198,6 +222,9 @@ impl TriMesh {
     /// ends of an edge shorter than `1e-8` of its face's longest edge bend too: the rays through
     /// such an edge make windows narrower than a float backend keeps, and a path through one of
     /// its ends is then the best a float backend can offer (within the edge's length).
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn may_bend_geodesics(&self, v: VertexId) -> bool {
         /// Angle sums this close to 2 pi (relative) count as flat; acos-based sums carry ~1e-15.
         const FLAT_SLACK: f64 = 1e-9;
@@ -218,12 +245,18 @@ impl TriMesh {
 
     /// Whether the vertex lies on the boundary or where the surface is not a manifold: it joins
     /// several fans (a bowtie) or ends an edge shared by more than two faces.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn is_boundary_vertex(&self, v: VertexId) -> bool {
         self.topology.boundary_vertex[v.index()]
     }
 
     /// The face on side `side` of an edge (below [`TriMesh::side_count`]; sides 0 and 1 are
     /// [`Edge::faces`]), with its apex and its two other edges; `None` if that side has no face.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     #[inline]
     pub fn wing(&self, e: EdgeId, side: usize) -> Option<&Wing> {
         self.topology.wing(e, side)
@@ -231,18 +264,27 @@ impl TriMesh {
 
     /// The number of sides of an edge: 2 (side 1 is empty on the boundary), or one per face on
     /// an edge shared by more than two faces.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     #[inline]
     pub fn side_count(&self, e: EdgeId) -> usize {
         2 + self.topology.extra_faces(e).len()
     }
 
     /// The faces of an edge, side by side.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     pub fn edge_faces(&self, e: EdgeId) -> impl Iterator<Item = FaceId> + '_ {
         let extra = self.topology.extra_faces(e).iter().copied();
         self.edge(e).faces.into_iter().flatten().chain(extra)
     }
 
     /// The side of edge `e` on which face `f` lies, if `f` is one of its faces.
+    ///
+    /// # Panics
+    /// If `e` or `f` is not a face / an edge of the mesh.
     #[inline]
     pub fn side_of(&self, e: EdgeId, f: FaceId) -> Option<usize> {
         match self.edge(e).faces.iter().position(|&g| g == Some(f)) {
@@ -315,6 +357,9 @@ impl TriMesh {
     }
 
     /// Whether a face is degenerate (listed in [`ValidationReport::zero_area_faces`]).
+    ///
+    /// # Panics
+    /// If `f` is not a face of the mesh.
     pub fn is_degenerate_face(&self, f: FaceId) -> bool {
         self.report.zero_area_faces.binary_search(&f).is_ok()
     }

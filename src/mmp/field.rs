@@ -101,6 +101,9 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     }
 
     /// The geodesic distance of a vertex to its nearest source; `f64::INFINITY` if unreachable.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn vertex_distance(&self, v: VertexId) -> f64 {
         self.vertices[v.index()]
             .as_ref()
@@ -117,6 +120,9 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     }
 
     /// A vertex's distance in the backend's own number type; `None` if unreachable.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn vertex_distance_exact(&self, v: VertexId) -> Option<S> {
         self.vertices[v.index()]
             .as_ref()
@@ -124,12 +130,18 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     }
 
     /// Index (into [`sources`](Self::sources)) of the source nearest to a vertex.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn nearest_source(&self, v: VertexId) -> Option<usize> {
         self.vertices[v.index()].as_ref().map(|d| d.source)
     }
 
     /// The final wedges on an edge, sorted along it (from its `vertices[0]`), in the model's
     /// units.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     pub fn wedges(&self, e: EdgeId) -> Vec<Wedge<S>> {
         let wedges = &self.wedges[e.index()];
         if self.mesh.unit_scale() == 1.0 {
@@ -145,6 +157,9 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     }
 
     /// The length of an edge in the backend's number type.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     pub fn edge_length(&self, e: EdgeId) -> S {
         self.to_model(self.unfolding.length(e))
     }

@@ -268,6 +268,9 @@ fn cut_into_pieces<'a, S: Scalar>(
 /// The wedges of an edge after a new wedge meets them [LZT §4], outside a propagation: the
 /// Section 4 cases on hand-made wedges. `existing` are the edge's wedges, sorted and disjoint;
 /// the result is sorted and disjoint too, with the eq.-(2) cases met.
+///
+/// Unstable: an entry to the engine's internals for reproducing [LZT §4] and for tests; its
+/// signature may change with the engine.
 pub fn intersect<S: Scalar>(
     edge_length: &S,
     existing: &[Wedge<S>],

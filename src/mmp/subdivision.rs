@@ -172,6 +172,9 @@ impl FaceSubdivision {
 }
 
 /// The subdivision of `face` induced by the final wedges on its three edges [LZT Property 4].
+///
+/// # Panics
+/// If `face` is not a face of the field's mesh.
 pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -> FaceSubdivision {
     let mesh = field.mesh();
     let corners = mesh.face(face);
