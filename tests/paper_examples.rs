@@ -265,7 +265,7 @@ fn example4_face20_table() {
         .into_iter()
         .find(|w| {
             w.pseudo_source == PseudoSource::Source(0)
-                && w.tau.index() != mesh.side_of(e, FaceId(20)).expect("side")
+                && w.tau != mesh.side_of(e, FaceId(20)).expect("side")
         })
         .expect("the v2 wedge from outside");
     let via_v2 = v2.distance_function().at(&x);

@@ -15,7 +15,7 @@ pub(crate) mod vector;
 
 pub use error::MeshError;
 pub use handle::MeshHandle;
-pub use ids::{EdgeId, FaceId, VertexId};
+pub use ids::{EdgeId, FaceId, Side, VertexId};
 pub use topology::{Edge, Wing};
 pub use validation::{DuplicateFace, NonManifoldEdge, ValidationReport};
 pub(crate) use vector::normalizing_power;
@@ -258,8 +258,8 @@ impl TriMesh {
     /// # Panics
     /// If `e` is not an edge of the mesh.
     #[inline]
-    pub fn wing(&self, e: EdgeId, side: usize) -> Option<&Wing> {
-        self.topology.wing(e, side)
+    pub fn wing(&self, e: EdgeId, side: Side) -> Option<&Wing> {
+        self.topology.wing(e, side.index())
     }
 
     /// The number of sides of an edge: 2 (side 1 is empty on the boundary), or one per face on
@@ -270,6 +270,15 @@ impl TriMesh {
     #[inline]
     pub fn side_count(&self, e: EdgeId) -> usize {
         2 + self.topology.extra_faces(e).len()
+    }
+
+    /// The sides of an edge, in order ([`TriMesh::side_count`] of them).
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
+    #[inline]
+    pub fn sides(&self, e: EdgeId) -> impl Iterator<Item = Side> {
+        (0..self.side_count(e)).map(Side::from_index)
     }
 
     /// The faces of an edge, side by side.
@@ -284,10 +293,10 @@ impl TriMesh {
     /// The side of edge `e` on which face `f` lies, if `f` is one of its faces.
     ///
     /// # Panics
-    /// If `e` or `f` is not a face / an edge of the mesh.
+    /// If `e` is not an edge of the mesh.
     #[inline]
-    pub fn side_of(&self, e: EdgeId, f: FaceId) -> Option<usize> {
-        match self.edge(e).faces.iter().position(|&g| g == Some(f)) {
+    pub fn side_of(&self, e: EdgeId, f: FaceId) -> Option<Side> {
+        let index = match self.edge(e).faces.iter().position(|&g| g == Some(f)) {
             Some(side) => Some(side),
             None => self
                 .topology
@@ -295,14 +304,15 @@ impl TriMesh {
                 .iter()
                 .position(|&g| g == f)
                 .map(|i| i + 2),
-        }
+        };
+        index.map(Side::from_index)
     }
 
     /// Where the data of side `side` of edge `e` lives in an array with one entry per side
     /// of every edge (of length [`TriMesh::side_slot_count`]).
     #[inline]
-    pub(crate) fn side_slot(&self, e: EdgeId, side: usize) -> usize {
-        self.topology.side_slot(e, side)
+    pub(crate) fn side_slot(&self, e: EdgeId, side: Side) -> usize {
+        self.topology.side_slot(e, side.index())
     }
 
     /// The number of sides of all edges.

@@ -29,4 +29,4 @@ pub use subdivision::{
     face_subdivision, polygon_area, Bisector, BisectorKind, FaceSubdivision, Point2, Region,
 };
 pub use trace_back::{GeodesicPath, TraceError};
-pub use wedge::{PseudoSource, Side, Wedge};
+pub use wedge::{PseudoSource, Wedge};

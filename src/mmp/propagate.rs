@@ -7,8 +7,8 @@ use super::provenance::{Anchor, Provenance};
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::unfold::{FaceLayout, Planar, Unfolding};
-use super::wedge::{PseudoSource, Side, Wedge};
-use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
+use super::wedge::{PseudoSource, Wedge};
+use crate::mesh::{EdgeId, FaceId, Side, TriMesh, VertexId};
 use crate::scalar::{Scalar, Sign, Site};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -487,14 +487,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                         }
                     }
                 }
-                self.add_wedge(
-                    g,
-                    at,
-                    Side::from_index(side),
-                    sigma.clone(),
-                    (source, k),
-                    None,
-                );
+                self.add_wedge(g, at, side, sigma.clone(), (source, k), None);
             }
         }
     }
@@ -539,8 +532,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 beyond.extend(mesh.edge_faces(g).filter(|&h| h != f));
             }
             let ends = mesh.edge(g).vertices.map(to);
-            let tau = Side::from_index(side);
-            self.add_wedge(g, at, tau, sigma.clone(), (source, k), Some(ends));
+            self.add_wedge(g, at, side, sigma.clone(), (source, k), Some(ends));
         }
         for &g in mesh.vertex_edges(v) {
             let x = if mesh.edge(g).vertices[0] == v {
@@ -601,15 +593,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
         if w.source_y.sign() == Sign::Zero {
             return; // A wedge along its edge's line sees nothing beyond the line.
         }
-        for side in 0..self.mesh.side_count(w.edge) {
-            if side != w.tau.index() {
+        for side in self.mesh.sides(w.edge) {
+            if side != w.tau {
                 self.propagate_into(w, kept, side);
             }
         }
     }
 
     /// Propagates a wedge across the face on side `side` of its edge, if there is one.
-    fn propagate_into(&mut self, w: &Wedge<S>, kept: &Provenance<S>, side: usize) {
+    fn propagate_into(&mut self, w: &Wedge<S>, kept: &Provenance<S>, side: Side) {
         let mesh = self.mesh;
         let Some(layout) = FaceLayout::new(mesh, &self.unfolding, w.edge, side) else {
             return;
@@ -729,7 +721,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             } else {
                 (p0, p1)
             };
-            let tau = Side::from_index(mesh.side_of(g, face).expect("edge of the face"));
+            let tau = mesh.side_of(g, face).expect("edge of the face");
             let child = Wedge {
                 edge: g,
                 b0,

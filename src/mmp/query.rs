@@ -148,7 +148,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 continue;
             }
             let on_line = at.y.sign() == Sign::Zero;
-            let same_side = w.tau.index() == side;
+            let same_side = w.tau == side;
             // Where the ray from the pseudo-source to the point crosses the edge; `None` for
             // the pseudo-source itself (a source inside a face or an edge), which every wedge
             // of it reaches at its sigma, whatever range the wedge kept.

@@ -215,7 +215,7 @@ pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -
         };
         for w in field.wedges(e) {
             let (x, y) = (w.source_x.to_f64(), w.source_y.to_f64());
-            let inside = mesh.side_of(e, face) == Some(w.tau.index());
+            let inside = mesh.side_of(e, face) == Some(w.tau);
             let h = if inside { y } else { -y };
             let mut position = [
                 p0[0] + x * u[0] + h * inward[0],

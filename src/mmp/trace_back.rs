@@ -267,7 +267,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             let Some(at) = self.unfolding.apex_point(self.mesh(), edge, side) else {
                 continue;
             };
-            let beyond = |w: &Wedge<S>| !own(w) && w.tau.index() != side;
+            let beyond = |w: &Wedge<S>| !own(w) && w.tau != side;
             consider(self.best_through_edge(edge, face, &at, beyond));
         }
         for &edge in self.mesh().vertex_edges(v) {
@@ -301,8 +301,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 w.source_x.compare(&at.x) != Ordering::Greater
             };
         }
-        let Some(Apex { x: cx, h, .. }) = self.unfolding.apex(self.mesh(), w.edge, w.tau.index())
-        else {
+        let Some(Apex { x: cx, h, .. }) = self.unfolding.apex(self.mesh(), w.edge, w.tau) else {
             return false;
         };
         // u runs along the edge away from the vertex, c to the apex, d to the pseudo-source.
@@ -342,7 +341,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         // The face the wedge came through.
         let wedge_face = || {
             self.mesh()
-                .wing(edge, w.tau.index())
+                .wing(edge, w.tau)
                 .map(|wing| wing.face)
                 .ok_or_else(lost)
         };
@@ -371,7 +370,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 start,
             }));
         }
-        if w.tau.index() == side || w.source_y.sign() == Sign::Zero {
+        if w.tau == side || w.source_y.sign() == Sign::Zero {
             return Ok(Step::Walk(Walk {
                 edge,
                 face,
@@ -498,7 +497,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 .mesh()
                 .side_of(next_edge, walk.face)
                 .expect("face of the edge");
-            let next_face = e.faces[1 - here].ok_or_else(lost)?;
+            let next_face = e.faces[1 - here.index()].ok_or_else(lost)?;
             walk = Walk {
                 edge: next_edge,
                 face: next_face,

@@ -7,7 +7,7 @@
 
 use super::source::SurfacePoint;
 use super::wedge::{PseudoSource, Wedge};
-use crate::mesh::{normalizing_power, EdgeId, TriMesh, VertexId, Wing};
+use crate::mesh::{normalizing_power, EdgeId, Side, TriMesh, VertexId, Wing};
 use crate::scalar::{Scalar, Sign};
 use std::cmp::Ordering;
 
@@ -169,7 +169,7 @@ impl<S: Scalar> Unfolding<S> {
             let backwards = frame
                 .as_ref()
                 .and_then(|_| EdgeFrame::<S>::new(mesh, ends[1], ends[0]));
-            for side in 0..mesh.side_count(e) {
+            for side in mesh.sides(e) {
                 apex[mesh.side_slot(e, side)] = frame
                     .as_ref()
                     .zip(backwards.as_ref())
@@ -206,13 +206,13 @@ impl<S: Scalar> Unfolding<S> {
     /// The apex of the face on `side` of `e` (`None` without a face there, or on an edge of
     /// length zero).
     #[inline]
-    pub(crate) fn apex(&self, mesh: &TriMesh, e: EdgeId, side: usize) -> Option<&Apex<S>> {
+    pub(crate) fn apex(&self, mesh: &TriMesh, e: EdgeId, side: Side) -> Option<&Apex<S>> {
         self.apex[mesh.side_slot(e, side)].as_ref()
     }
 
     /// The apex of the face on `side` of `e` as a point of the edge's frame, below the line
     /// (`y = h`, the side a pseudo-source on the other side looks at).
-    pub(crate) fn apex_point(&self, mesh: &TriMesh, e: EdgeId, side: usize) -> Option<Planar<S>> {
+    pub(crate) fn apex_point(&self, mesh: &TriMesh, e: EdgeId, side: Side) -> Option<Planar<S>> {
         self.apex(mesh, e, side).map(|a| Planar {
             x: a.x.clone(),
             y: a.h.clone(),
@@ -318,7 +318,7 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         mesh: &'a TriMesh,
         unfolding: &'a Unfolding<S>,
         e: EdgeId,
-        side: usize,
+        side: Side,
     ) -> Option<Self> {
         let wing = mesh.wing(e, side)?;
         let apex = unfolding.apex(mesh, e, side)?;
@@ -471,7 +471,8 @@ mod tests {
         let e = mesh
             .edge_between(VertexId(0), VertexId(3))
             .expect("the diagonal");
-        let side = (0..2)
+        let side = mesh
+            .sides(e)
             .find(|&s| mesh.wing(e, s).is_some_and(|w| w.apex == VertexId(1)))
             .expect("the face with apex (1, 0)");
         let layout = FaceLayout::new(&mesh, &unfolding, e, side).expect("a face");
@@ -508,7 +509,7 @@ mod tests {
         assert!(unfolding.is_zero_length(e));
         assert!(unfolding.has_twin(VertexId(0)) && unfolding.has_twin(VertexId(2)));
         assert!(!unfolding.has_twin(VertexId(1)));
-        assert!(unfolding.apex(&mesh, e, 0).is_none());
+        assert!(unfolding.apex(&mesh, e, Side::FIRST).is_none());
         let p = [
             Real::from_f64(0.5),
             Real::from_f64(0.0),
