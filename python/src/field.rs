@@ -102,7 +102,7 @@ impl GeodesicField {
         let nearest = (0..self.mesh().vertex_count())
             .map(|v| {
                 let v = VertexId(v as u32);
-                on_field!(&self.field, f => f.nearest_source(v)).map_or(-1, |k| k as i64)
+                on_field!(&self.field, f => f.nearest_source(v)).map_or(-1, |k| i64::from(k.0))
             })
             .collect();
         PyArray1::from_vec(py, nearest)
@@ -163,7 +163,7 @@ impl GeodesicField {
             points: rows_of_three(py, &path.points).unbind(),
             simplices: PyList::new(py, simplices)?.unbind(),
             distance: path.distance,
-            source: path.source,
+            source: path.source.index(),
             length: path.length(),
         })
     }
@@ -254,10 +254,10 @@ fn wedge_dict<'py, S: Scalar>(py: Python<'py>, w: &Wedge<S>) -> PyResult<Bound<'
     dict.set_item("source_x", w.source_x.to_f64())?;
     dict.set_item("source_y", w.source_y.to_f64())?;
     match w.pseudo_source {
-        PseudoSource::Source(k) => dict.set_item("pseudo_source", ("source", k))?,
+        PseudoSource::Source(k) => dict.set_item("pseudo_source", ("source", k.0))?,
         PseudoSource::Vertex(v) => dict.set_item("pseudo_source", ("vertex", v.0))?,
     }
-    dict.set_item("source", w.source)?;
+    dict.set_item("source", w.source.0)?;
     Ok(dict)
 }
 

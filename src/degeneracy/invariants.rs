@@ -17,7 +17,7 @@
 
 use super::measure::{distance_f64, distance_in, EdgePaths};
 use crate::mesh::shapes::SplitMix64;
-use crate::mesh::{FaceId, TriMesh, VertexId};
+use crate::mesh::{FaceId, SourceId, TriMesh, VertexId};
 use crate::mmp::{propagate, GeodesicField, PropagateOptions, SurfacePoint, TraceError};
 use crate::scalar::{Scalar, Sign};
 use serde::Serialize;
@@ -390,7 +390,7 @@ fn check_trace<S: Scalar, R: Scalar>(
             )
         });
     }
-    if path.simplices.last() != Some(&SurfacePoint::Vertex(a)) || path.source != 0 {
+    if path.simplices.last() != Some(&SurfacePoint::Vertex(a)) || path.source != SourceId(0) {
         findings.add(ViolationKind::TraceWrongEnd, || {
             format!(
                 "from {a} to {target:?}: the path ends at {:?}",

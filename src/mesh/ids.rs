@@ -1,4 +1,4 @@
-//! Typed indices for mesh elements.
+//! Typed indices for mesh elements (and for the sources placed on them).
 //!
 //! Indices are `u32` newtypes (as spade's fixed handles are), so a vertex index can never be
 //! passed where a face index is expected. All indices are 0-based and follow the order of the
@@ -42,6 +42,11 @@ id_type!(
     /// A triangle of a [`TriMesh`](crate::TriMesh), in file order.
     FaceId,
     "f"
+);
+id_type!(
+    /// A source of a propagation: its place in the list of sources given to it.
+    SourceId,
+    "s"
 );
 
 /// A side of an edge: the place of one of its faces. A wedge's tau (Definition 1 [LZT §2]) is

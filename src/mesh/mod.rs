@@ -15,7 +15,7 @@ pub(crate) mod vector;
 
 pub use error::MeshError;
 pub use handle::MeshHandle;
-pub use ids::{EdgeId, FaceId, Side, VertexId};
+pub use ids::{EdgeId, FaceId, Side, SourceId, VertexId};
 pub use topology::{Edge, Wing};
 pub use validation::{DuplicateFace, NonManifoldEdge, ValidationReport};
 pub(crate) use vector::normalizing_power;

@@ -5,7 +5,7 @@ use super::source::SurfacePoint;
 use super::stats::Stats;
 use super::unfold::Unfolding;
 use super::wedge::Wedge;
-use crate::mesh::{EdgeId, MeshHandle, TriMesh, VertexId};
+use crate::mesh::{EdgeId, MeshHandle, SourceId, TriMesh, VertexId};
 use crate::scalar::Scalar;
 use std::sync::Arc;
 
@@ -19,11 +19,11 @@ use std::sync::Arc;
 /// Two opposite corners of the unit cube as sources: every other corner is an edge away from
 /// one of them, and a point inside a face is answered as a vertex is.
 /// ```
-/// use exact_geodesics::{mesh::shapes, propagate, FaceId, PropagateOptions, SurfacePoint, VertexId};
+/// use exact_geodesics::{mesh::shapes, propagate, FaceId, PropagateOptions, SourceId, SurfacePoint, VertexId};
 /// let cube = shapes::cube();
 /// let sources = [SurfacePoint::Vertex(VertexId(0)), SurfacePoint::Vertex(VertexId(6))];
 /// let field = propagate::<f64>(&cube, &sources, &PropagateOptions::default())?;
-/// assert_eq!(field.nearest_source(VertexId(6)), Some(1));
+/// assert_eq!(field.nearest_source(VertexId(6)), Some(SourceId(1)));
 /// for v in [1, 2, 3, 4, 5, 7].map(VertexId) {
 ///     assert!((field.vertex_distance(v) - 1.0).abs() < 1e-12);
 /// }
@@ -133,7 +133,7 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     ///
     /// # Panics
     /// If `v` is not a vertex of the mesh.
-    pub fn nearest_source(&self, v: VertexId) -> Option<usize> {
+    pub fn nearest_source(&self, v: VertexId) -> Option<SourceId> {
         self.vertices[v.index()].as_ref().map(|d| d.source)
     }
 

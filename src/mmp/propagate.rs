@@ -8,7 +8,7 @@ use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::unfold::{FaceLayout, Planar, Unfolding};
 use super::wedge::{PseudoSource, Wedge};
-use crate::mesh::{EdgeId, FaceId, Side, TriMesh, VertexId};
+use crate::mesh::{EdgeId, FaceId, Side, SourceId, TriMesh, VertexId};
 use crate::scalar::{Scalar, Sign, Site};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -166,7 +166,7 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     let mut engine = Engine::new(mesh, options, sources);
     for k in 0..engine.sources.len() {
         let point = engine.sources[k];
-        engine.emit_source(k, &point);
+        engine.emit_source(SourceId(k as u32), &point);
     }
     engine.run(&mut progress);
     engine.stats.propagation_seconds = started.elapsed().as_secs_f64();
@@ -199,7 +199,7 @@ pub(crate) struct Slot<S: Scalar> {
 pub(crate) struct VertexDistance<S> {
     pub(crate) distance: S,
     pub(crate) approx: f64,
-    pub(crate) source: usize,
+    pub(crate) source: SourceId,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -376,7 +376,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// waits in the queue to act as a pseudo-source. Its twins (ends of its edges of length
     /// zero, the same point of the surface) take the same distance as it is, not a rounded
     /// copy of it.
-    pub(crate) fn improve_vertex(&mut self, v: VertexId, distance: S, source: usize) {
+    pub(crate) fn improve_vertex(&mut self, v: VertexId, distance: S, source: SourceId) {
         let slot = &mut self.vertices[v.index()];
         match slot {
             Some(known) if distance.compare_distance(&known.distance) != Ordering::Less => return,
@@ -417,7 +417,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     }
 
     /// The initial wedges of a source [SSK+05 §4]: on every edge of every face containing it.
-    fn emit_source(&mut self, k: usize, point: &SurfacePoint) {
+    fn emit_source(&mut self, k: SourceId, point: &SurfacePoint) {
         let source = PseudoSource::Source(k);
         match *point {
             SurfacePoint::Vertex(v) => self.emit_source_vertex(v, k),
@@ -443,7 +443,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         }
     }
 
-    fn emit_source_vertex(&mut self, v: VertexId, k: usize) {
+    fn emit_source_vertex(&mut self, v: VertexId, k: SourceId) {
         self.improve_vertex(v, S::zero(), k);
         self.emit_from_vertex(v, S::zero(), PseudoSource::Source(k), k);
         self.pending_emission[v.index()] = false;
@@ -460,7 +460,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         mut done: Vec<FaceId>,
         sigma: S,
         source: PseudoSource,
-        k: usize,
+        k: SourceId,
     ) {
         let mesh = self.mesh;
         done.extend(faces.iter().copied());
@@ -496,7 +496,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// opposite it in each incident face, and along each incident edge. A vertex lying inside
     /// its opposite edge (the middle corner of a degenerate face) is a point of that edge as
     /// well, and sends wedges into the face beyond it as a source on an edge does.
-    fn emit_from_vertex(&mut self, v: VertexId, sigma: S, source: PseudoSource, k: usize) {
+    fn emit_from_vertex(&mut self, v: VertexId, sigma: S, source: PseudoSource, k: SourceId) {
         let mesh = self.mesh;
         let mut beyond = Vec::new();
         // The distance through the vertex to each neighbour, one value for every wedge of the
@@ -559,7 +559,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         at: Planar<S>,
         tau: Side,
         sigma: S,
-        (source, k): (PseudoSource, usize),
+        (source, k): (PseudoSource, SourceId),
         at_ends: Option<[S::Kept<S>; 2]>,
     ) {
         let wedge = Wedge {

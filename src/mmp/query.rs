@@ -6,7 +6,7 @@ use super::field::GeodesicField;
 use super::source::{PointError, SurfacePoint};
 use super::unfold::Planar;
 use super::wedge::Wedge;
-use crate::mesh::{EdgeId, FaceId, VertexId};
+use crate::mesh::{EdgeId, FaceId, SourceId, VertexId};
 use crate::scalar::{Scalar, Sign};
 use std::cmp::Ordering;
 
@@ -69,7 +69,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     ///
     /// # Errors
     /// [`PointError`] if the point is not a point of the mesh.
-    pub fn nearest_source_at(&self, point: &SurfacePoint) -> Result<Option<usize>, PointError> {
+    pub fn nearest_source_at(&self, point: &SurfacePoint) -> Result<Option<SourceId>, PointError> {
         let point = point.validated(self.mesh())?;
         Ok(self.best_at(&point).and_then(|b| match b.via {
             Via::Wedge { edge, wedge, .. } => Some(self.wedges[edge.index()][wedge].source),

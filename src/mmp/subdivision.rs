@@ -223,7 +223,7 @@ pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -
             ];
             let vertex = match w.pseudo_source {
                 PseudoSource::Vertex(v) => Some(v),
-                PseudoSource::Source(k) => match field.sources()[k] {
+                PseudoSource::Source(k) => match field.sources()[k.index()] {
                     super::SurfacePoint::Vertex(v) => Some(v),
                     _ => None,
                 },

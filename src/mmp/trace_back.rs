@@ -8,7 +8,7 @@ use super::query::{Best, Via};
 use super::source::{PointError, SurfacePoint};
 use super::unfold::{Apex, FaceLayout, Planar};
 use super::wedge::{PseudoSource, Wedge};
-use crate::mesh::{EdgeId, FaceId, VertexId};
+use crate::mesh::{EdgeId, FaceId, SourceId, VertexId};
 use crate::scalar::{Scalar, Sign};
 use serde::Serialize;
 use std::cmp::Ordering;
@@ -24,7 +24,7 @@ pub struct GeodesicPath {
     /// The geodesic distance of the target, as the field gives it.
     pub distance: f64,
     /// Index of the source the path ends at.
-    pub source: usize,
+    pub source: SourceId,
 }
 
 impl GeodesicPath {
@@ -179,7 +179,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             };
             match pseudo_source {
                 PseudoSource::Source(k) => {
-                    push_point(&mut simplices, self.sources[k]);
+                    push_point(&mut simplices, self.sources[k.index()]);
                     return Ok(self.finish(simplices, distance, k));
                 }
                 PseudoSource::Vertex(v) => via = Via::Vertex(v),
@@ -190,7 +190,12 @@ impl<S: Scalar> GeodesicField<'_, S> {
         })
     }
 
-    fn finish(&self, simplices: Vec<SurfacePoint>, distance: f64, source: usize) -> GeodesicPath {
+    fn finish(
+        &self,
+        simplices: Vec<SurfacePoint>,
+        distance: f64,
+        source: SourceId,
+    ) -> GeodesicPath {
         GeodesicPath {
             points: simplices.iter().map(|p| p.position(self.mesh())).collect(),
             simplices,
@@ -228,10 +233,11 @@ impl<S: Scalar> GeodesicField<'_, S> {
             .then(degenerate(a).cmp(&degenerate(b)))
     }
 
-    fn source_at_vertex(&self, v: VertexId) -> Option<usize> {
+    fn source_at_vertex(&self, v: VertexId) -> Option<SourceId> {
         self.sources
             .iter()
             .position(|s| *s == SurfacePoint::Vertex(v))
+            .map(|k| SourceId(k as u32))
     }
 
     /// How a vertex was reached, excluding the wedges it (or a twin, in `twins`) emitted itself: wedges on the opposite
@@ -524,7 +530,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     fn closure_path(&self, face: FaceId, target: PseudoSource) -> Option<Vec<SurfacePoint>> {
         let point = match target {
             PseudoSource::Vertex(v) => SurfacePoint::Vertex(v),
-            PseudoSource::Source(k) => self.sources[k],
+            PseudoSource::Source(k) => self.sources[k.index()],
         };
         let own = point.faces(self.mesh());
         if own.contains(&face) {

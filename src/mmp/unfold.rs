@@ -268,7 +268,7 @@ impl<S: Scalar> Unfolding<S> {
     ) -> S {
         let from = match w.pseudo_source {
             PseudoSource::Vertex(u) => vertex_point(mesh, u),
-            PseudoSource::Source(k) => self.position(mesh, &sources[k]),
+            PseudoSource::Source(k) => self.position(mesh, &sources[k.index()]),
         };
         let d = sub(&vertex_point(mesh, v), &from);
         w.sigma.clone() + &dot(&d, &d).sqrt()

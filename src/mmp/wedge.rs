@@ -1,7 +1,7 @@
 //! The wedge (Surazhsky's "window") of Definition 1 [LZT §2].
 
 use super::unfold::Planar;
-use crate::mesh::{EdgeId, Side, VertexId};
+use crate::mesh::{EdgeId, Side, SourceId, VertexId};
 use crate::scalar::{Scalar, SourceDistance};
 use serde::Serialize;
 
@@ -10,7 +10,7 @@ use serde::Serialize;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
 pub enum PseudoSource {
     /// The source with this index in the list passed to the propagation.
-    Source(usize),
+    Source(SourceId),
     /// A mesh vertex.
     Vertex(VertexId),
 }
@@ -40,7 +40,7 @@ pub struct Wedge<S> {
     /// The pseudo-source.
     pub pseudo_source: PseudoSource,
     /// Index of the source the wedge's geodesics lead back to.
-    pub source: usize,
+    pub source: SourceId,
 }
 
 impl<S: Scalar> Wedge<S> {

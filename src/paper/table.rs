@@ -67,7 +67,7 @@ impl fmt::Display for EdgeRows {
 pub fn pseudo_source_name<S: Scalar>(field: &GeodesicField<'_, S>, w: &Wedge<S>) -> String {
     match w.pseudo_source {
         PseudoSource::Vertex(v) => format!("v{}", v.0),
-        PseudoSource::Source(k) => match field.sources()[k] {
+        PseudoSource::Source(k) => match field.sources()[k.index()] {
             SurfacePoint::Vertex(v) => format!("v{}", v.0),
             _ => format!("source{k}"),
         },
