@@ -1,5 +1,6 @@
 //! The result of a propagation: the final wedges on every edge and the vertex distances.
 
+use super::edge_wedges::EdgeWedges;
 use super::propagate::VertexDistance;
 use super::source::SurfacePoint;
 use super::stats::Stats;
@@ -40,7 +41,7 @@ pub struct GeodesicField<'m, S: Scalar> {
     mesh: MeshHandle<'m>,
     pub(crate) unfolding: Unfolding<S>,
     pub(crate) sources: Vec<SurfacePoint>,
-    pub(crate) wedges: Vec<Vec<Wedge<S>>>,
+    pub(crate) wedges: EdgeWedges<S>,
     pub(crate) vertices: Vec<Option<VertexDistance<S>>>,
     pub(crate) stats: Stats,
 }
@@ -50,7 +51,7 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
         mesh: &'m TriMesh,
         unfolding: Unfolding<S>,
         sources: Vec<SurfacePoint>,
-        wedges: Vec<Vec<Wedge<S>>>,
+        wedges: EdgeWedges<S>,
         vertices: Vec<Option<VertexDistance<S>>>,
         stats: Stats,
     ) -> Self {
@@ -143,9 +144,9 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     /// # Panics
     /// If `e` is not an edge of the mesh.
     pub fn wedges(&self, e: EdgeId) -> Vec<Wedge<S>> {
-        let wedges = &self.wedges[e.index()];
+        let wedges = self.wedges.on(e);
         if self.mesh.unit_scale() == 1.0 {
-            return wedges.clone();
+            return wedges.to_vec();
         }
         let factor = self.model_factor();
         wedges.iter().map(|w| w.scaled(&factor)).collect()
@@ -153,7 +154,7 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
 
     /// The number of final wedges on every edge.
     pub fn wedge_counts(&self) -> Vec<usize> {
-        self.wedges.iter().map(Vec::len).collect()
+        self.wedges.per_edge().map(<[Wedge<S>]>::len).collect()
     }
 
     /// The length of an edge in the backend's number type.

@@ -1,6 +1,7 @@
 //! Continuous Dijkstra over wedges [SSK+05 §4, LZT §2]: a priority queue of wedges ordered by
 //! the smallest distance each gives, and of vertices waiting to act as pseudo-sources.
 
+use super::edge_wedges::EdgeWedges;
 use super::field::GeodesicField;
 use super::intersect::Scratch;
 use super::provenance::{Anchor, Provenance};
@@ -332,23 +333,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 *v = None;
             }
         }
-        // Move the final wedges out of their slots: cloning them would double the peak memory.
-        let mut slots: Vec<Option<Wedge<S>>> =
-            self.slots.into_iter().map(|s| Some(s.wedge)).collect();
-        let wedges: Vec<Vec<Wedge<S>>> = self
-            .lists
-            .iter()
-            .map(|list| {
-                list.iter()
-                    .map(|&i| {
-                        slots[i as usize]
-                            .take()
-                            .expect("a wedge is in one list only")
-                    })
-                    .collect()
-            })
-            .collect();
-        drop(slots);
+        // Out of their slots and grouped by edge in place: copies would double the peak memory.
+        let arena = self.slots.into_iter().map(|s| s.wedge).collect();
+        let wedges = EdgeWedges::group(arena, &self.lists);
         GeodesicField::new(
             self.mesh,
             self.unfolding,

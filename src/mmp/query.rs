@@ -72,7 +72,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     pub fn nearest_source_at(&self, point: &SurfacePoint) -> Result<Option<SourceId>, PointError> {
         let point = point.validated(self.mesh())?;
         Ok(self.best_at(&point).and_then(|b| match b.via {
-            Via::Wedge { edge, wedge, .. } => Some(self.wedges[edge.index()][wedge].source),
+            Via::Wedge { edge, wedge, .. } => Some(self.wedges.on(edge)[wedge].source),
             Via::Vertex(v) => self.nearest_source(v),
         }))
     }
@@ -143,7 +143,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         let side = self.mesh().side_of(edge, face)?;
         let length = self.unfolding.length(edge);
         let mut best = None;
-        for (i, w) in self.wedges[edge.index()].iter().enumerate() {
+        for (i, w) in self.wedges.on(edge).iter().enumerate() {
             if !accept(w) {
                 continue;
             }

@@ -148,7 +148,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     face,
                     at,
                 } => {
-                    let w = &self.wedges[edge.index()][wedge];
+                    let w = &self.wedges.on(edge)[wedge];
                     let end = match self.enter(edge, wedge, face, at, start, &mut simplices)? {
                         Step::Walk(walk) => {
                             self.walk_to(walk, w.pseudo_source, &mut simplices, budget)?
@@ -337,7 +337,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         start: Option<VertexId>,
         simplices: &mut Vec<SurfacePoint>,
     ) -> Result<Step<S>, TraceError> {
-        let w = &self.wedges[edge.index()][wedge];
+        let w = &self.wedges.on(edge)[wedge];
         let e = self.mesh().edge(edge);
         let side = self.mesh().side_of(edge, face).expect("face of the edge");
         let s = w.source_point();
