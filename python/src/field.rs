@@ -11,7 +11,7 @@ use exact_geodesics::{
     SurfacePoint, TraceError, TriMesh, VertexId, Wedge,
 };
 use numpy::{PyArray1, PyArray2};
-use pyo3::exceptions::PyRuntimeError;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use std::sync::Arc;
@@ -72,6 +72,20 @@ impl GeodesicField {
 
     fn mesh(&self) -> &TriMesh {
         on_field!(&self.field, f => f.mesh())
+    }
+
+    /// The exact backend's field, for `digits` certified digits, at the field's precision cap.
+    fn exact_field(&self, digits: u32) -> PyResult<&Field<'static, Real>> {
+        let AnyField::Exact(field) = &self.field else {
+            return Err(PyValueError::new_err(
+                "exact values need a field of the exact backend (backend=\"exact\")",
+            ));
+        };
+        if digits == 0 {
+            return Err(PyValueError::new_err("digits must be at least 1"));
+        }
+        self.query_cap()?;
+        Ok(field)
     }
 
     /// Queries of the exact backend decide signs at the running thread's precision cap: give
@@ -141,6 +155,41 @@ impl GeodesicField {
         let point = input::surface_point(self.mesh(), point)?;
         self.query_cap()?;
         on_field!(&self.field, f => f.distance_at(&point)).map_err(value_error)
+    }
+
+    /// The certified decimal digits of the distance of every vertex (``exact`` backend only): a
+    /// list of strings of ``digits`` significant digits, each within one unit of its last digit
+    /// of the exact distance, ``None`` where unreachable.
+    ///
+    /// Raises ``ValueError`` for the float backends or ``digits`` = 0, ``RuntimeError`` where
+    /// the digits are out of reach (an uncertified decision, or beyond the precision cap).
+    #[pyo3(signature = (digits = 20))]
+    fn exact_distances(&self, digits: u32) -> PyResult<Vec<Option<String>>> {
+        let field = self.exact_field(digits)?;
+        (0..self.mesh().vertex_count())
+            .map(|v| {
+                let v = VertexId(v as u32);
+                field
+                    .vertex_distance_exact(v)
+                    .map(|d| certified_digits(&d, digits, &v.to_string()))
+                    .transpose()
+            })
+            .collect()
+    }
+
+    /// The certified decimal digits of the distance at any surface point (``exact`` backend
+    /// only), as ``exact_distances`` gives them; ``None`` if unreachable.
+    ///
+    /// Raises as ``exact_distances``, and ``ValueError`` if the point is not a point of the mesh.
+    #[pyo3(signature = (point, digits = 20))]
+    fn exact_distance_at(&self, point: &Bound<'_, PyAny>, digits: u32) -> PyResult<Option<String>> {
+        let field = self.exact_field(digits)?;
+        let point = input::surface_point(self.mesh(), point)?;
+        field
+            .distance_at_exact(&point)
+            .map_err(value_error)?
+            .map(|d| certified_digits(&d, digits, "the point"))
+            .transpose()
     }
 
     /// The shortest path from ``target`` back to its nearest source [LZT §2].
@@ -292,4 +341,14 @@ impl GeodesicPath {
             self.source
         )
     }
+}
+
+/// `digits` certified decimal digits of `value`, or a `RuntimeError` naming `what`.
+fn certified_digits(value: &Real, digits: u32, what: &str) -> PyResult<String> {
+    value.to_decimal(digits).ok_or_else(|| {
+        PyRuntimeError::new_err(format!(
+            "{what}: {digits} certified digits are out of reach (an uncertified decision, or \
+             beyond the precision cap)"
+        ))
+    })
 }
