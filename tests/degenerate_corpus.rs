@@ -6,7 +6,9 @@
 mod common;
 
 use common::strategies::degenerate_case;
-use exact_geodesics::degeneracy::{run_case, Backend, CaseReport, DegenerateKind};
+use exact_geodesics::degeneracy::{
+    run_case, run_case_of_size, Backend, CaseReport, DegenerateKind, MeshSize,
+};
 use proptest::prelude::*;
 use proptest::test_runner::RngSeed;
 
@@ -88,15 +90,29 @@ regressions! {
         Adaptive, Pyramid, 7593930394342328515;
     adaptive_coincident_vertices_3964739607747407278_reaches_every_vertex:
         Adaptive, CoincidentVertices, 3964739607747407278;
-    // The exact backend, on small meshes.
+}
+
+/// Cases the exact backend once failed on meshes of at most 20 faces (its size then).
+macro_rules! tiny_regressions {
+    ($($name:ident: $kind:ident, $seed:literal;)*) => {$(
+        #[test]
+        fn $name() {
+            let report =
+                run_case_of_size(Backend::Exact, DegenerateKind::$kind, $seed, MeshSize::Tiny);
+            assert!(report.violations.is_empty(), "{}", describe(&report));
+        }
+    )*};
+}
+
+tiny_regressions! {
     exact_coincident_vertices_16294208416658607535_distances_stay_below_edge_paths:
-        Exact, CoincidentVertices, 16294208416658607535;
+        CoincidentVertices, 16294208416658607535;
     exact_coincident_vertices_7313543279846440201_trace_steps_from_face_to_face:
-        Exact, CoincidentVertices, 7313543279846440201;
+        CoincidentVertices, 7313543279846440201;
     exact_zero_area_faces_16079692208719082326_distances_stay_below_edge_paths:
-        Exact, ZeroAreaFaces, 16079692208719082326;
+        ZeroAreaFaces, 16079692208719082326;
     exact_zero_area_faces_6192573367858229616_trace_steps_from_face_to_face:
-        Exact, ZeroAreaFaces, 6192573367858229616;
+        ZeroAreaFaces, 6192573367858229616;
 }
 
 /// Cases whose float results were wrong beyond any tolerance (rays through an edge 1e-12 the

@@ -29,6 +29,6 @@ pub use invariants::{
     ViolationKind,
 };
 pub use run::{
-    run_case, run_corpus, Backend, CaseReport, CaseViolation, CorpusProgress, CorpusSummary,
-    MeshKindTally,
+    run_case, run_case_of_size, run_corpus, Backend, CaseReport, CaseViolation, CorpusProgress,
+    CorpusSummary, MeshKindTally,
 };

@@ -76,6 +76,16 @@ pub struct CaseReport {
 /// assert_eq!(report.mesh_kind, DegenerateKind::Components);
 /// ```
 pub fn run_case(backend: Backend, mesh_kind: DegenerateKind, seed: u64) -> CaseReport {
+    run_case_of_size(backend, mesh_kind, seed, backend.mesh_size())
+}
+
+/// [`run_case`] on a mesh of the given size instead of the backend's.
+pub fn run_case_of_size(
+    backend: Backend,
+    mesh_kind: DegenerateKind,
+    seed: u64,
+    size: MeshSize,
+) -> CaseReport {
     let mut rng = SplitMix64::new(seed.rotate_left(17) ^ 0x5eed);
     let mut report = CaseReport {
         mesh_kind,
@@ -87,7 +97,7 @@ pub fn run_case(backend: Backend, mesh_kind: DegenerateKind, seed: u64) -> CaseR
         beyond_float_range: false,
     };
     let outcome = catch_unwind(AssertUnwindSafe(|| {
-        let case = degenerate_case(mesh_kind, seed, backend.mesh_size());
+        let case = degenerate_case(mesh_kind, seed, size);
         let n = case.mesh.vertex_count() as u64;
         let mut vertex = |focus_chance: f64| {
             if !case.focus.is_empty() && rng.next_f64() < focus_chance {

@@ -9,7 +9,7 @@ use std::path::PathBuf;
 #[derive(Args)]
 pub struct DegeneracyArgs {
     /// Number type of the engine under test (f64 is checked against adaptive, the others
-    /// against f64; exact runs on meshes of at most 20 faces).
+    /// against f64; exact runs on meshes of at most 100 faces).
     #[arg(long, value_enum, default_value_t = Backend::F64)]
     backend: Backend,
     /// Number of cases, cycling through the kinds of degeneracy.
