@@ -8,6 +8,8 @@ Tang [LZT], from the Rust library ``exact-geodesics``, generic over its number t
   :class:`GeodesicField` (distances, nearest sources, distances anywhere, paths, wedges, stats).
 - :func:`compute_gdist`, :func:`local_gdist_matrix`, :func:`distance_matrix_of_selected_points`:
   the functions of the ``gdist`` package, with the same arguments.
+- :mod:`exact_geodesics.geodesic`: ``PyGeodesicAlgorithmExact``, the class of the
+  ``pygeodesic`` package, with the same methods and results.
 - :func:`read_mesh`, :func:`generate_mesh`: meshes as ``(vertices, triangles)`` arrays.
 
 Bad input raises ``ValueError`` with the library's message; nothing is printed.
@@ -15,11 +17,13 @@ Bad input raises ``ValueError`` with the library's message; nothing is printed.
 
 from ._compat import compute_gdist, distance_matrix_of_selected_points, local_gdist_matrix
 from ._native import GeodesicField, GeodesicPath, GeodesicSolver, generate_mesh, read_mesh
+from .geodesic import PyGeodesicAlgorithmExact
 
 __all__ = [
     "GeodesicField",
     "GeodesicPath",
     "GeodesicSolver",
+    "PyGeodesicAlgorithmExact",
     "compute_gdist",
     "distance_matrix_of_selected_points",
     "generate_mesh",
