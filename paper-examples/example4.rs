@@ -3,9 +3,9 @@
 //! (Fig. 15, Property 4).
 
 use exact_geodesics::mesh::shapes;
-use exact_geodesics::mmp::face_subdivision;
 use exact_geodesics::paper::subdivision_summary;
 use exact_geodesics::paper::table::face_rows;
+use exact_geodesics::subdivision::face_subdivision;
 use exact_geodesics::{propagate, FaceId, PropagateOptions, SurfacePoint, VertexId};
 
 fn main() {

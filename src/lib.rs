@@ -38,6 +38,7 @@ pub mod mmp;
 pub mod paper;
 pub mod render;
 pub mod scalar;
+pub mod subdivision;
 
 pub use mesh::{EdgeId, FaceId, MeshError, Side, SourceId, TriMesh, ValidationReport, VertexId};
 pub use mmp::{

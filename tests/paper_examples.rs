@@ -3,13 +3,13 @@
 
 use exact_geodesics::mesh::io::{read_path, ReadOptions};
 use exact_geodesics::mesh::shapes;
-use exact_geodesics::mmp::{face_subdivision, BisectorKind, FaceSubdivision};
 use exact_geodesics::paper::examples::{
     eq2_of, unfold_named, EXAMPLE1, EXAMPLE1_EDGE, EXAMPLE2, EXAMPLE2_EDGE, EXAMPLE3, EXAMPLE3_EDGE,
 };
 use exact_geodesics::paper::strip::StripWedge;
 use exact_geodesics::paper::table::face_rows;
 use exact_geodesics::scalar::{BisectorRoots, SourceDistance};
+use exact_geodesics::subdivision::{face_subdivision, BisectorKind, FaceSubdivision};
 use exact_geodesics::{
     propagate, FaceId, GeodesicField, PropagateOptions, PseudoSource, SourceId, SurfacePoint,
     TriMesh, VertexId,

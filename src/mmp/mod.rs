@@ -12,7 +12,6 @@ mod provenance;
 mod query;
 mod source;
 mod stats;
-mod subdivision;
 mod trace_back;
 mod unfold;
 mod wedge;
@@ -26,8 +25,5 @@ pub use propagate::{
 };
 pub use source::{PointError, SurfacePoint};
 pub use stats::{Eq2Counts, Eq2Decision, Stats};
-pub use subdivision::{
-    face_subdivision, polygon_area, Bisector, BisectorKind, FaceSubdivision, Point2, Region,
-};
 pub use trace_back::{GeodesicPath, TraceError};
 pub use wedge::{PseudoSource, Wedge};

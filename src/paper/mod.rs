@@ -8,7 +8,7 @@ pub mod examples;
 pub mod strip;
 pub mod table;
 
-use crate::mmp::{BisectorKind, FaceSubdivision};
+use crate::subdivision::{BisectorKind, FaceSubdivision};
 use std::fmt::Write;
 
 /// A face subdivision as text: one line per region (label, sigma, area, image) and per

@@ -2,7 +2,7 @@
 //! region filled and labelled with its pseudo-source, bisectors drawn over the fills, corners
 //! named.
 
-use crate::mmp::{FaceSubdivision, Point2};
+use crate::subdivision::{FaceSubdivision, Point2};
 use std::fmt::Write;
 
 /// Width and height of the drawing in pixels.
@@ -87,8 +87,8 @@ pub fn subdivision_svg(sub: &FaceSubdivision) -> String {
     }
     for b in &sub.bisectors {
         let dash = match b.kind {
-            crate::mmp::BisectorKind::Line => "",
-            crate::mmp::BisectorKind::Hyperbola => r#" stroke-dasharray="8,3""#,
+            crate::subdivision::BisectorKind::Line => "",
+            crate::subdivision::BisectorKind::Hyperbola => r#" stroke-dasharray="8,3""#,
         };
         writeln!(
             svg,

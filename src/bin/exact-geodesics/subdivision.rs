@@ -3,9 +3,9 @@
 
 use crate::{emit, with_backend, Backend, Common};
 use clap::Args;
-use exact_geodesics::mmp::face_subdivision;
 use exact_geodesics::paper::subdivision_summary;
 use exact_geodesics::render::svg::subdivision_svg;
+use exact_geodesics::subdivision::face_subdivision;
 use exact_geodesics::FaceId;
 use std::path::PathBuf;
 

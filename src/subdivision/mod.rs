@@ -9,9 +9,12 @@
 //! star-shaped from its image, so a region is traced along rays from its image; its boundaries
 //! with other regions are bisectors, lines (equal sigmas) or hyperbola branches (eq. (1)).
 
-use super::field::GeodesicField;
-use super::wedge::PseudoSource;
+mod tolerance;
+
+pub use tolerance::SubdivisionTolerance;
+
 use crate::mesh::{FaceId, VertexId};
+use crate::mmp::{GeodesicField, PseudoSource};
 use crate::scalar::Scalar;
 use serde::Serialize;
 
@@ -146,13 +149,7 @@ pub fn polygon_area(polygon: &[Point2]) -> f64 {
 /// A traced region: its image's index and its polygon.
 type Traced = (usize, Vec<Point2>);
 
-/// Angular slack (radians) when asking whether a wedge's rays meet a point.
-const ANGLE: f64 = 1e-12;
-
-/// Rays per region, bisection steps per boundary point, samples per ray.
-const RAYS: usize = 720;
-const BISECTIONS: usize = 50;
-const SAMPLES: usize = 96;
+type Tol = SubdivisionTolerance;
 
 impl FaceSubdivision {
     /// The face's area.
@@ -195,7 +192,7 @@ pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -
         [x2, (l02 * l02 - x2 * x2).max(0.0).sqrt()],
     ];
     let scale = l01.max(l02).max(l12);
-    let tol = 1e-9 * scale;
+    let tol = Tol::POINT * scale;
     let corner_of = |v: VertexId| corners.iter().position(|&c| c == v).map(|k| layout[k]);
 
     let mut images: Vec<Image> = Vec::new();
@@ -311,7 +308,8 @@ fn nearest_image(images: &[Image], x: Point2, tol: f64) -> Option<usize> {
         if m.reach.iter().any(|r| reaches(*r, m.position, x)) {
             let d = norm(sub(x, m.position)) + m.sigma;
             let better = best.is_none_or(|(j, b)| {
-                d < b - tol * 1e-3 || (d <= b + tol * 1e-3 && m.sigma < images[j].sigma)
+                d < b - tol * Tol::DISTANCE_TIE
+                    || (d <= b + tol * Tol::DISTANCE_TIE && m.sigma < images[j].sigma)
             });
             if better {
                 best = Some((k, d));
@@ -321,7 +319,8 @@ fn nearest_image(images: &[Image], x: Point2, tol: f64) -> Option<usize> {
     best.map(|(k, _)| k)
 }
 
-/// Whether the rays of `reach` from image `s` meet `x`, with an angular slack of `ANGLE`.
+/// Whether the rays of `reach` from image `s` meet `x`, with an angular slack of
+/// [`SubdivisionTolerance::ANGLE`].
 fn reaches(reach: Reach, s: Point2, x: Point2) -> bool {
     let (q0, q1, beyond) = match reach {
         Reach::Face => return true,
@@ -330,12 +329,12 @@ fn reaches(reach: Reach, s: Point2, x: Point2) -> bool {
     };
     let (a, b, d) = (sub(q0, s), sub(q1, s), sub(x, s));
     let turn = cross(a, b).signum();
-    let within = turn * cross(a, d) >= -ANGLE * norm(a) * norm(d)
-        && turn * cross(d, b) >= -ANGLE * norm(b) * norm(d);
+    let within = turn * cross(a, d) >= -Tol::ANGLE * norm(a) * norm(d)
+        && turn * cross(d, b) >= -Tol::ANGLE * norm(b) * norm(d);
     // Positive on the image's side of the segment's line.
     let e = sub(q1, q0);
     let side = cross(e, sub(x, q0)) * cross(e, sub(s, q0)).signum();
-    let slack = ANGLE * norm(e) * norm(d);
+    let slack = Tol::ANGLE * norm(e) * norm(d);
     within
         && if beyond {
             side <= slack
@@ -367,13 +366,16 @@ fn trace_region(
         t
     };
     let scale = norm(sub(b, a)).max(norm(sub(c, a)));
-    let outside = !face.face_contains(s, 1e-12)
-        || face.layout.iter().any(|&q| norm(sub(q, s)) < 1e-9 * scale);
+    let outside = !face.face_contains(s, Tol::IN_FACE)
+        || face
+            .layout
+            .iter()
+            .any(|&q| norm(sub(q, s)) < Tol::POINT * scale);
     let (lo, hi) = if outside {
         let angles: Vec<f64> = face
             .layout
             .iter()
-            .filter(|&&q| norm(sub(q, s)) > 1e-9 * scale)
+            .filter(|&&q| norm(sub(q, s)) > Tol::POINT * scale)
             .map(|&q| angle_of(q))
             .collect();
         (
@@ -390,30 +392,29 @@ fn trace_region(
         let d = direction(t);
         let (near, tb) = clip_ray(face, s, d)?;
         let inside = |u: f64| nearest(along(s, d, u)) == Some(k);
-        let step = (tb - near) / SAMPLES as f64;
-        if !inside(near + 1e-6 * (tb - near)) {
+        let step = (tb - near) / Tol::SAMPLES as f64;
+        if !inside(near + Tol::FIRST_SAMPLE * (tb - near)) {
             return None;
         }
-        let far = match (1..=SAMPLES).find(|&i| !inside(near + step * i as f64)) {
+        let far = match (1..=Tol::SAMPLES).find(|&i| !inside(near + step * i as f64)) {
             None => tb,
             Some(i) => bisect(near + step * i as f64, near + step * (i - 1) as f64, inside),
         };
         Some((near, far, d))
     };
-    let margin = 1e-9;
-    let (lo, hi) = (lo + margin, hi - margin);
+    let (lo, hi) = (lo + Tol::REACH_MARGIN, hi - Tol::REACH_MARGIN);
     let mut runs: Vec<Vec<f64>> = Vec::new();
     let mut current: Vec<f64> = Vec::new();
     let mut previous: Option<f64> = None;
-    for i in 0..=RAYS {
-        let t = lo + (hi - lo) * i as f64 / RAYS as f64;
+    for i in 0..=Tol::RAYS {
+        let t = lo + (hi - lo) * i as f64 / Tol::RAYS as f64;
         let present = run(t).is_some();
         // The limiting ray itself may be a tie along its whole length (a bisector through the
         // image): trace just inside it.
-        let nudge = 1e-4 * (hi - lo) / RAYS as f64;
+        let nudge = Tol::RAY_NUDGE * (hi - lo) / Tol::RAYS as f64;
         match (present, previous) {
             (true, None) if i > 0 => {
-                let prev_t = lo + (hi - lo) * (i - 1) as f64 / RAYS as f64;
+                let prev_t = lo + (hi - lo) * (i - 1) as f64 / Tol::RAYS as f64;
                 current.push(bisect(prev_t, t, |u| run(u).is_some()) + nudge);
                 current.push(t);
             }
@@ -437,11 +438,11 @@ fn trace_region(
             }
             let mut polygon: Vec<Point2> = rays.iter().map(|&(n, _, d)| along(s, d, n)).collect();
             polygon.extend(rays.iter().rev().map(|&(_, f, d)| along(s, d, f)));
-            dedup(&mut polygon, 1e-12 * scale);
+            dedup(&mut polygon, Tol::DEDUP * scale);
             if polygon_area(&polygon) < 0.0 {
                 polygon.reverse();
             }
-            (polygon.len() >= 3 && polygon_area(&polygon) > 1e-14 * scale * scale)
+            (polygon.len() >= 3 && polygon_area(&polygon) > Tol::AREA * scale * scale)
                 .then_some(polygon)
         })
         .collect()
@@ -457,7 +458,7 @@ fn dedup(polygon: &mut Vec<Point2>, tol: f64) {
 /// The last parameter in `[good, bad]` where `keep` holds, by bisection (`keep(good)` holds,
 /// `keep(bad)` does not).
 fn bisect(mut bad: f64, mut good: f64, keep: impl Fn(f64) -> bool) -> f64 {
-    for _ in 0..BISECTIONS {
+    for _ in 0..Tol::BISECTIONS {
         let mid = 0.5 * (bad + good);
         if keep(mid) {
             good = mid;
@@ -477,7 +478,7 @@ fn clip_ray(face: &FaceSubdivision, s: Point2, d: Point2) -> Option<(f64, f64)> 
         let e = sub(q, p);
         let at0 = cross(e, sub(s, p));
         let slope = cross(e, d);
-        if slope.abs() < 1e-300 {
+        if slope.abs() < Tol::PARALLEL {
             if at0 < 0.0 {
                 return None;
             }
@@ -536,7 +537,7 @@ fn bisectors(
 ) -> Vec<Bisector> {
     let [a, b, c] = face.layout;
     let scale = norm(sub(b, a)).max(norm(sub(c, a)));
-    let probe = 1e-6 * scale;
+    let probe = Tol::PROBE * scale;
     let mut out: Vec<Bisector> = Vec::new();
     for (r, (k, polygon)) in traced.iter().enumerate() {
         let n = polygon.len();
@@ -579,7 +580,7 @@ fn bisectors(
             let (mi, mj) = (&images[*k], &images[traced[j].0]);
             let gap = (mi.sigma - mj.sigma).abs();
             let apart = norm(sub(mi.position, mj.position));
-            let kind = if gap <= 1e-9 * scale || (gap - apart).abs() <= 1e-9 * scale {
+            let kind = if gap <= Tol::POINT * scale || (gap - apart).abs() <= Tol::POINT * scale {
                 BisectorKind::Line
             } else {
                 BisectorKind::Hyperbola
