@@ -144,3 +144,30 @@ fn bad_sources_are_typed_errors() {
         .trace_back(&SurfacePoint::Vertex(VertexId(100)))
         .is_err());
 }
+
+#[test]
+fn a_negative_or_nan_max_distance_is_an_error_not_no_limit() {
+    let mesh = exact_geodesics::mesh::shapes::cube();
+    let source = [exact_geodesics::SurfacePoint::Vertex(
+        exact_geodesics::VertexId(0),
+    )];
+    for bad in [-1.0, f64::NAN, f64::NEG_INFINITY] {
+        let options = exact_geodesics::PropagateOptions::default().with_max_distance(bad);
+        let result = exact_geodesics::propagate::<f64>(&mesh, &source, &options);
+        assert!(
+            matches!(result, Err(exact_geodesics::PointError::MaxDistance { .. })),
+            "max distance {bad}"
+        );
+    }
+    // Zero and infinity are limits: the source alone, and everything.
+    for (limit, reached) in [(0.0, 1), (f64::INFINITY, 8)] {
+        let options = exact_geodesics::PropagateOptions::default().with_max_distance(limit);
+        let field = exact_geodesics::propagate::<f64>(&mesh, &source, &options).expect("valid");
+        let finite = field
+            .vertex_distances()
+            .iter()
+            .filter(|d| d.is_finite())
+            .count();
+        assert_eq!(finite, reached, "max distance {limit}");
+    }
+}

@@ -76,7 +76,8 @@ pub struct Progress {
 /// vertex no face uses, beyond `max_distance`) are at distance `f64::INFINITY`.
 ///
 /// # Errors
-/// [`PointError`] if there is no source or a source is not a point of the mesh.
+/// [`PointError`] if there is no source, a source is not a point of the mesh, or the maximum
+/// distance is negative or NaN.
 ///
 /// # Example
 /// ```
@@ -156,6 +157,9 @@ pub fn propagate_with_progress<'m, S: Scalar>(
 ) -> Result<GeodesicField<'m, S>, PointError> {
     if sources.is_empty() {
         return Err(PointError::NoSource);
+    }
+    if let Some(max_distance) = options.max_distance.filter(|d| d.is_nan() || *d < 0.0) {
+        return Err(PointError::MaxDistance { max_distance });
     }
     let sources = sources
         .iter()

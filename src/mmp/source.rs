@@ -81,6 +81,16 @@ pub enum PointError {
     /// No sources were given.
     #[error("at least one source is needed")]
     NoSource,
+    /// A maximum distance that is negative or NaN ([`PropagateOptions::max_distance`]).
+    ///
+    /// [`PropagateOptions::max_distance`]: crate::PropagateOptions::max_distance
+    #[error(
+        "the maximum distance {max_distance} must be a non-negative number (inf for no limit)"
+    )]
+    MaxDistance {
+        /// The maximum distance given.
+        max_distance: f64,
+    },
 }
 
 impl SurfacePoint {
