@@ -17,6 +17,8 @@ mod gmp;
 #[cfg(feature = "gmp")]
 use gmp as imp;
 #[cfg(not(feature = "gmp"))]
+mod lehmer;
+#[cfg(not(feature = "gmp"))]
 mod pure;
 #[cfg(not(feature = "gmp"))]
 use pure as imp;
