@@ -7,7 +7,7 @@
 //! the numbers to grow much. Reducing by gcds, as a canonical rational does after every
 //! operation, would cost more than the rest of the arithmetic.
 
-use super::bignum::{Float, Integer, Rational, Round};
+use super::bignum::{f64_parts, Float, Integer, Rational, Round};
 use super::roots::CertifiedSign;
 use super::{Ring, Sign};
 use std::cmp::Ordering;
@@ -160,18 +160,10 @@ impl Ring for Q {
         if !x.is_finite() || x == 0.0 {
             return Q::zero();
         }
-        // x = mantissa 2^exponent exactly, the mantissa an integer below 2^53.
-        let bits = x.to_bits();
-        let exponent = ((bits >> 52) & 0x7ff) as i64;
-        let fraction = bits & ((1u64 << 52) - 1);
-        let (mantissa, e) = if exponent == 0 {
-            (fraction, -1074)
-        } else {
-            (fraction | (1u64 << 52), exponent - 1075)
-        };
+        let (negative, mantissa, e) = f64_parts(x);
         let n = Integer::from(mantissa as i64);
         Q {
-            n: if x < 0.0 { -n } else { n },
+            n: if negative { -n } else { n },
             e,
             d: Integer::from(1),
         }

@@ -17,14 +17,25 @@ mod gmp;
 #[cfg(feature = "gmp")]
 use gmp as imp;
 #[cfg(not(feature = "gmp"))]
-mod lehmer;
-#[cfg(not(feature = "gmp"))]
 mod pure;
 #[cfg(not(feature = "gmp"))]
 use pure as imp;
 
 pub(crate) use imp::Float;
 pub use imp::{Integer, Rational};
+
+/// `x = (-1)^neg mantissa 2^exp` exactly, the mantissa below `2^53`, for a finite `x`.
+pub(crate) fn f64_parts(x: f64) -> (bool, u64, i64) {
+    let bits = x.to_bits();
+    let exponent = ((bits >> 52) & 0x7ff) as i64;
+    let fraction = bits & ((1u64 << 52) - 1);
+    let (mantissa, exp) = if exponent == 0 {
+        (fraction, -1074)
+    } else {
+        (fraction | (1u64 << 52), exponent - 1075)
+    };
+    (x.is_sign_negative(), mantissa, exp)
+}
 
 /// The direction in which a [`Float`] operation rounds its exact result.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
