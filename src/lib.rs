@@ -39,10 +39,11 @@ pub mod paper;
 pub mod render;
 pub mod scalar;
 
-pub use mesh::{EdgeId, FaceId, MeshError, TriMesh, ValidationReport, VertexId};
+pub use mesh::{EdgeId, FaceId, MeshError, Side, SourceId, TriMesh, ValidationReport, VertexId};
 pub use mmp::{
-    geodesic_distances, propagate, propagate_with_progress, GeodesicField, GeodesicPath,
-    PointError, PropagateOptions, PseudoSource, Side, Stats, SurfacePoint, TraceError, Wedge,
+    geodesic_distances, propagate, propagate_shared, propagate_with_progress, GeodesicField,
+    GeodesicPath, PointError, PropagateOptions, PseudoSource, Stats, SurfacePoint, TraceError,
+    Wedge,
 };
 pub use scalar::Scalar;
 

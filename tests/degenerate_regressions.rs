@@ -244,3 +244,105 @@ fn paths_on_huge_and_tiny_triangles_have_their_lengths() {
         assert_close(path.length(), leg * 2f64.sqrt(), &format!("legs {leg}"));
     }
 }
+
+/// A flat strip of two rows (y = 0 and y = 1) whose columns widen from 1e-6 to 1e6, each cell
+/// split by a diagonal rising or falling: slivers of every size from 1e-6 to 1e6 side by side,
+/// in a convex flat region, where every geodesic is the straight line. A face laid out over
+/// its long diagonal with its apex next to the far end once had its short edge's direction
+/// computed as a difference of positions along the diagonal (`length - x`), which turned it
+/// by 1e-10; rays unfolded across it turned as much, times their length. And rounding left
+/// distances below the straight line, which no geodesic can be.
+#[test]
+fn a_flat_strip_of_slivers_from_1e_6_to_1e6_keeps_straight_distances() {
+    let xs = [
+        0.0,
+        1e-6,
+        1e-3,
+        0.5,
+        1.0,
+        7.0,
+        1e3,
+        1e6,
+        1e6 + 1.0,
+        1e6 + 3.0,
+    ];
+    for parity in 0..2 {
+        let mesh = flat_strip(&xs, parity);
+        let n = mesh.vertex_count() as u32;
+        for source in 0..n {
+            for (backend, d) in [
+                ("f64", distances::<f64>(&mesh, source)),
+                ("adaptive", distances::<Adaptive>(&mesh, source)),
+            ] {
+                for v in 0..n {
+                    let want = straight(&mesh, source, v);
+                    let what = format!("{backend}, parity {parity}, from v{source}: d(v{v})");
+                    assert_close(d[v as usize], want, &what);
+                }
+            }
+        }
+        for (v, d) in distances::<Real>(&mesh, 0).into_iter().enumerate() {
+            let what = format!("exact, parity {parity}: d(v{v})");
+            assert_close(d, straight(&mesh, 0, v as u32), &what);
+        }
+    }
+}
+
+/// Two rows of points (y = 0 and y = 1) at `xs`, each cell split by a diagonal that rises in
+/// cells of the given parity and falls in the others.
+fn flat_strip(xs: &[f64], parity: usize) -> TriMesh {
+    let n = xs.len() as u32;
+    let positions: Vec<[f64; 3]> = [0.0, 1.0]
+        .iter()
+        .flat_map(|&y| xs.iter().map(move |&x| [x, y, 0.0]))
+        .collect();
+    let mut faces = Vec::new();
+    for i in 0..n - 1 {
+        let (a, b, c, d) = (i, i + 1, n + i + 1, n + i);
+        if (i as usize + parity) % 2 == 0 {
+            faces.extend([[a, b, c], [a, c, d]]);
+        } else {
+            faces.extend([[a, b, d], [b, c, d]]);
+        }
+    }
+    TriMesh::new(positions, faces).expect("usable mesh")
+}
+
+/// A needle: two vertices 1.2e-12 apart, joined by an edge, inside a flat unit square. Every
+/// distance is the straight line; from one end of the needle, the wedges on the unit edges
+/// opposite it once gave the other end 1e-4 less than the needle's length (their positions
+/// are rounded at 1e-16 of a unit), and that won over the edge itself.
+#[test]
+fn a_needle_keeps_its_length_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.5, 0.5, 0.0],
+            [0.5 + 1e-12, 0.5 + 7e-13, 0.0],
+        ],
+        vec![
+            [0, 1, 5],
+            [1, 2, 5],
+            [2, 4, 5],
+            [0, 5, 4],
+            [2, 3, 4],
+            [3, 0, 4],
+        ],
+    )
+    .expect("usable mesh");
+    for source in [4, 5] {
+        for (backend, d) in every_backend(&mesh, source) {
+            for v in 0..6 {
+                let want = straight(&mesh, source, v);
+                assert_close(
+                    d[v as usize],
+                    want,
+                    &format!("{backend} from v{source}: d(v{v})"),
+                );
+            }
+        }
+    }
+}

@@ -185,6 +185,7 @@ fn table_rows_carry_the_counts_and_the_ratio() {
     let t2 = Table2Row::new("ico", Backend::Adaptive, &shape, &counts);
     assert_eq!((t1.source, t1.faces, t1.edges), (3, 80, 120));
     assert_eq!(t1.wedges_mean, t2.wedges_mean);
+    assert_eq!(t1.seconds, t2.seconds);
     assert!(close(
         t2.wedges_per_unit_length,
         t1.wedges_mean / t2.edge_length_mean
@@ -420,7 +421,7 @@ fn cli_table2_ratio_is_mean_wedges_over_mean_length() {
 
 #[test]
 #[cfg(feature = "cli")]
-fn cli_table1_agrees_with_stats_for_the_same_model_source_and_backend() {
+fn cli_table1_agrees_with_stats_and_wedges_for_the_same_model_source_and_backend() {
     // Both models lie in the unit cube already, so normalization leaves them unchanged. The
     // cube has 19 wedges from a corner; the flat grid has up to 3 on an edge, in adaptive.
     for (model, backend) in [("gen:cube", "f64"), ("gen:grid:8,8", "adaptive")] {
@@ -468,6 +469,29 @@ fn cli_table1_agrees_with_stats_for_the_same_model_source_and_backend() {
                 stats["wedges"], row["wedges_total"],
                 "{model} from v{source}"
             );
+            // The `wedges` command lists every edge's final wedges: w(e) counted by hand.
+            let listed: serde_json::Value = serde_json::from_str(&stdout(&run(&[
+                "wedges",
+                model,
+                "--backend",
+                backend,
+                "--source",
+                &format!("v:{source}"),
+                "--format",
+                "json",
+            ])))
+            .expect("JSON");
+            let w: Vec<usize> = listed
+                .as_array()
+                .expect("an array of edges")
+                .iter()
+                .map(|e| e["wedges"].as_array().expect("wedges").len())
+                .filter(|&n| n > 0)
+                .collect();
+            let edges = row["edges"].as_u64().expect("a count") as usize;
+            assert_eq!(row["wedges_total"], w.iter().sum::<usize>());
+            assert_eq!(row["wedges_max"], *w.iter().max().expect("a wedge") as f64);
+            assert_eq!(row["edges_without_wedges"], edges - w.len());
             largest = largest.max(row["wedges_max"].as_f64().expect("a number"));
         }
         assert!(largest >= 2.0, "{model}: {largest}");

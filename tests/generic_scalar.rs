@@ -73,6 +73,9 @@ impl Scalar for CloneOnly {
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign {
         f64::orientation([&p[0].0, &p[1].0], [&q[0].0, &q[1].0], [&r[0].0, &r[1].0])
     }
+    fn at_least(value: Self, bound: impl FnOnce() -> Self) -> Self {
+        CloneOnly(f64::at_least(value.0, || bound().0))
+    }
     fn sign(&self) -> Sign {
         self.0.sign()
     }

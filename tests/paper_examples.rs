@@ -11,8 +11,8 @@ use exact_geodesics::paper::strip::StripWedge;
 use exact_geodesics::paper::table::face_rows;
 use exact_geodesics::scalar::{BisectorRoots, SourceDistance};
 use exact_geodesics::{
-    propagate, FaceId, GeodesicField, PropagateOptions, PseudoSource, SurfacePoint, TriMesh,
-    VertexId,
+    propagate, FaceId, GeodesicField, PropagateOptions, PseudoSource, SourceId, SurfacePoint,
+    TriMesh, VertexId,
 };
 use std::path::Path;
 
@@ -146,7 +146,7 @@ fn example2_parallel_pseudo_source_has_no_solution() {
     let i = mesh.edge_between(VertexId(0), VertexId(1)).expect("edge I");
     let finals = field.wedges(i);
     assert_eq!(finals.len(), 1);
-    assert_eq!(finals[0].pseudo_source, PseudoSource::Source(0));
+    assert_eq!(finals[0].pseudo_source, PseudoSource::Source(SourceId(0)));
     let top = mesh
         .edge_between(VertexId(7), VertexId(6))
         .expect("top edge");
@@ -264,8 +264,8 @@ fn example4_face20_table() {
         .wedges(e)
         .into_iter()
         .find(|w| {
-            w.pseudo_source == PseudoSource::Source(0)
-                && w.tau.index() != mesh.side_of(e, FaceId(20)).expect("side")
+            w.pseudo_source == PseudoSource::Source(SourceId(0))
+                && w.tau != mesh.side_of(e, FaceId(20)).expect("side")
         })
         .expect("the v2 wedge from outside");
     let via_v2 = v2.distance_function().at(&x);

@@ -5,7 +5,7 @@ mod common;
 
 use common::random_face_point;
 use exact_geodesics::mesh::shapes::{self, SplitMix64};
-use exact_geodesics::{propagate, PropagateOptions, SurfacePoint, VertexId};
+use exact_geodesics::{propagate, PropagateOptions, SourceId, SurfacePoint, VertexId};
 
 fn dist2(a: [f64; 3], b: [f64; 3]) -> f64 {
     ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
@@ -73,7 +73,7 @@ fn several_sources_split_the_plane_by_their_bisector() {
         );
         if (d0 - d1).abs() > 1e-9 {
             let nearest = field.nearest_source_at(&q).expect("valid");
-            assert_eq!(nearest, Some(usize::from(d1 < d0)), "{q:?}");
+            assert_eq!(nearest, Some(SourceId(u32::from(d1 < d0))), "{q:?}");
         }
     }
 }

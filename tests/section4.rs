@@ -3,7 +3,7 @@
 
 use exact_geodesics::mmp::intersect;
 use exact_geodesics::scalar::{BisectorRoots, Field, Real, Ring, Scalar};
-use exact_geodesics::{EdgeId, PseudoSource, Side, Wedge};
+use exact_geodesics::{EdgeId, PseudoSource, Side, SourceId, Wedge};
 
 const LENGTH: f64 = 4.0;
 
@@ -17,8 +17,8 @@ fn wedge<S: Scalar>(id: usize, (b0, b1): (f64, f64), (x, y, sigma): (f64, f64, f
         source_y: S::from_f64(y.abs()),
         sigma: S::from_f64(sigma),
         tau: if y >= 0.0 { Side::FIRST } else { Side::SECOND },
-        pseudo_source: PseudoSource::Source(id),
-        source: id,
+        pseudo_source: PseudoSource::Source(SourceId(id as u32)),
+        source: SourceId(id as u32),
     }
 }
 
@@ -27,7 +27,7 @@ fn meet<S: Scalar>(existing: Wedge<S>, arriving: Wedge<S>) -> (Vec<(usize, f64, 
     let (result, counts) = intersect(&S::from_f64(LENGTH), &[existing], &arriving);
     let pieces = result
         .iter()
-        .map(|w| (w.source, w.b0.to_f64(), w.b1.to_f64()))
+        .map(|w| (w.source.index(), w.b0.to_f64(), w.b1.to_f64()))
         .collect();
     (
         pieces,

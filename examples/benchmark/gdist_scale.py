@@ -28,10 +28,13 @@ from common import MODELS, PAPER_TABLE1, ROOT, write_rows
 DEFAULT_MODELS = PAPER_TABLE1 + ["spot"]
 
 
-def unit_cube(vertices):
-    """The vertices translated to the origin and scaled by the largest bounding-box side."""
-    low = vertices.min(axis=0)
-    side = (vertices.max(axis=0) - low).max()
+def unit_cube(vertices, triangles):
+    """The vertices translated and scaled as `exact_geodesics::experiments::normalize_to_unit_cube`
+    does, to the same bits: the bounding box of the vertices that faces use starts at the
+    origin, and every coordinate is divided by its largest side."""
+    used = vertices[np.unique(triangles)]
+    low = used.min(axis=0)
+    side = (used.max(axis=0) - low).max()
     return (vertices - low) / side
 
 
@@ -56,7 +59,7 @@ def main():
             print(f"notice: {path} absent, skipped", file=sys.stderr)
             continue
         vertices, triangles = load_obj(path)
-        unit = unit_cube(vertices)
+        unit = unit_cube(vertices, triangles)
         base = distances(unit, triangles, args.source)
         reached = np.isfinite(base) & (base > 0)
         for k in range(-12, 13):

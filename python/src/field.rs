@@ -7,14 +7,13 @@ use exact_geodesics::mesh::EdgeId;
 use exact_geodesics::scalar::exact::set_precision_cap;
 use exact_geodesics::scalar::{Adaptive, Backend, Real, Scalar};
 use exact_geodesics::{
-    propagate, GeodesicField as Field, PointError, PropagateOptions, PseudoSource, SurfacePoint,
-    TraceError, TriMesh, VertexId, Wedge,
+    propagate_shared, GeodesicField as Field, PointError, PropagateOptions, PseudoSource,
+    SurfacePoint, TraceError, TriMesh, VertexId, Wedge,
 };
 use numpy::{PyArray1, PyArray2};
-use pyo3::exceptions::PyRuntimeError;
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
-use self_cell::self_cell;
 use std::sync::Arc;
 
 /// A field of any backend.
@@ -35,30 +34,21 @@ macro_rules! on_field {
     };
 }
 
-impl<'m> AnyField<'m> {
-    /// Propagates from `sources` with the backend's number type.
+impl AnyField<'static> {
+    /// Propagates from `sources` with the backend's number type, on the shared mesh.
     pub fn propagate(
-        mesh: &'m TriMesh,
+        mesh: &Arc<TriMesh>,
         backend: Backend,
         sources: &[SurfacePoint],
         options: &PropagateOptions,
     ) -> Result<Self, PointError> {
         Ok(match backend {
-            Backend::F64 => AnyField::F64(propagate(mesh, sources, options)?),
-            Backend::Adaptive => AnyField::Adaptive(propagate(mesh, sources, options)?),
-            Backend::Exact => AnyField::Exact(propagate(mesh, sources, options)?),
+            Backend::F64 => AnyField::F64(propagate_shared(mesh, sources, options)?),
+            Backend::Adaptive => AnyField::Adaptive(propagate_shared(mesh, sources, options)?),
+            Backend::Exact => AnyField::Exact(propagate_shared(mesh, sources, options)?),
         })
     }
 }
-
-self_cell!(
-    /// A mesh and a field that borrows it.
-    pub struct OwnedField {
-        owner: Arc<TriMesh>,
-        #[covariant]
-        dependent: AnyField,
-    }
-);
 
 /// The geodesic distance field of a set of sources (``GeodesicSolver.propagate``).
 ///
@@ -66,13 +56,13 @@ self_cell!(
 /// at distance ``inf``.
 #[pyclass(module = "exact_geodesics", frozen)]
 pub struct GeodesicField {
-    field: OwnedField,
+    field: AnyField<'static>,
     backend: Backend,
     precision_cap: Option<u32>,
 }
 
 impl GeodesicField {
-    pub fn new(field: OwnedField, backend: Backend, precision_cap: Option<u32>) -> Self {
+    pub fn new(field: AnyField<'static>, backend: Backend, precision_cap: Option<u32>) -> Self {
         GeodesicField {
             field,
             backend,
@@ -81,7 +71,21 @@ impl GeodesicField {
     }
 
     fn mesh(&self) -> &TriMesh {
-        self.field.borrow_owner()
+        on_field!(&self.field, f => f.mesh())
+    }
+
+    /// The exact backend's field, for `digits` certified digits, at the field's precision cap.
+    fn exact_field(&self, digits: u32) -> PyResult<&Field<'static, Real>> {
+        let AnyField::Exact(field) = &self.field else {
+            return Err(PyValueError::new_err(
+                "exact values need a field of the exact backend (backend=\"exact\")",
+            ));
+        };
+        if digits == 0 {
+            return Err(PyValueError::new_err("digits must be at least 1"));
+        }
+        self.query_cap()?;
+        Ok(field)
     }
 
     /// Queries of the exact backend decide signs at the running thread's precision cap: give
@@ -101,7 +105,7 @@ impl GeodesicField {
     /// unreachable), in the order of the solver's vertices.
     #[getter]
     fn distances<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        let distances = on_field!(self.field.borrow_dependent(), f => f.vertex_distances());
+        let distances = on_field!(&self.field, f => f.vertex_distances());
         PyArray1::from_vec(py, distances)
     }
 
@@ -112,8 +116,7 @@ impl GeodesicField {
         let nearest = (0..self.mesh().vertex_count())
             .map(|v| {
                 let v = VertexId(v as u32);
-                on_field!(self.field.borrow_dependent(), f => f.nearest_source(v))
-                    .map_or(-1, |k| k as i64)
+                on_field!(&self.field, f => f.nearest_source(v)).map_or(-1, |k| i64::from(k.0))
             })
             .collect();
         PyArray1::from_vec(py, nearest)
@@ -122,7 +125,7 @@ impl GeodesicField {
     /// The sources as the library validated them, each as ``(kind, index, parameters)``.
     #[getter]
     fn sources<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
-        let sources = on_field!(self.field.borrow_dependent(), f => f.sources());
+        let sources = on_field!(&self.field, f => f.sources());
         let items = sources
             .iter()
             .map(|p| input::simplex(py, p))
@@ -141,7 +144,7 @@ impl GeodesicField {
     /// ``False`` when a decision reached the precision cap unproved (see ``stats()``).
     #[getter]
     fn is_certified(&self) -> bool {
-        on_field!(self.field.borrow_dependent(), f => f.is_certified())
+        on_field!(&self.field, f => f.is_certified())
     }
 
     /// The geodesic distance from the nearest source to any surface point (``inf`` if
@@ -151,7 +154,42 @@ impl GeodesicField {
     fn distance_at(&self, point: &Bound<'_, PyAny>) -> PyResult<f64> {
         let point = input::surface_point(self.mesh(), point)?;
         self.query_cap()?;
-        on_field!(self.field.borrow_dependent(), f => f.distance_at(&point)).map_err(value_error)
+        on_field!(&self.field, f => f.distance_at(&point)).map_err(value_error)
+    }
+
+    /// The certified decimal digits of the distance of every vertex (``exact`` backend only): a
+    /// list of strings of ``digits`` significant digits, each within one unit of its last digit
+    /// of the exact distance, ``None`` where unreachable.
+    ///
+    /// Raises ``ValueError`` for the float backends or ``digits`` = 0, ``RuntimeError`` where
+    /// the digits are out of reach (an uncertified decision, or beyond the precision cap).
+    #[pyo3(signature = (digits = 20))]
+    fn exact_distances(&self, digits: u32) -> PyResult<Vec<Option<String>>> {
+        let field = self.exact_field(digits)?;
+        (0..self.mesh().vertex_count())
+            .map(|v| {
+                let v = VertexId(v as u32);
+                field
+                    .vertex_distance_exact(v)
+                    .map(|d| certified_digits(&d, digits, &v.to_string()))
+                    .transpose()
+            })
+            .collect()
+    }
+
+    /// The certified decimal digits of the distance at any surface point (``exact`` backend
+    /// only), as ``exact_distances`` gives them; ``None`` if unreachable.
+    ///
+    /// Raises as ``exact_distances``, and ``ValueError`` if the point is not a point of the mesh.
+    #[pyo3(signature = (point, digits = 20))]
+    fn exact_distance_at(&self, point: &Bound<'_, PyAny>, digits: u32) -> PyResult<Option<String>> {
+        let field = self.exact_field(digits)?;
+        let point = input::surface_point(self.mesh(), point)?;
+        field
+            .distance_at_exact(&point)
+            .map_err(value_error)?
+            .map(|d| certified_digits(&d, digits, "the point"))
+            .transpose()
     }
 
     /// The shortest path from ``target`` back to its nearest source [LZT §2].
@@ -161,13 +199,10 @@ impl GeodesicField {
     fn path(&self, py: Python<'_>, target: &Bound<'_, PyAny>) -> PyResult<GeodesicPath> {
         let target = input::surface_point(self.mesh(), target)?;
         self.query_cap()?;
-        let path =
-            on_field!(self.field.borrow_dependent(), f => f.trace_back(&target)).map_err(|e| {
-                match e {
-                    TraceError::Lost { .. } => PyRuntimeError::new_err(e.to_string()),
-                    e => value_error(e),
-                }
-            })?;
+        let path = on_field!(&self.field, f => f.trace_back(&target)).map_err(|e| match e {
+            TraceError::Lost { .. } => PyRuntimeError::new_err(e.to_string()),
+            e => value_error(e),
+        })?;
         let simplices = path
             .simplices
             .iter()
@@ -177,7 +212,7 @@ impl GeodesicField {
             points: rows_of_three(py, &path.points).unbind(),
             simplices: PyList::new(py, simplices)?.unbind(),
             distance: path.distance,
-            source: path.source,
+            source: path.source.index(),
             length: path.length(),
         })
     }
@@ -199,7 +234,7 @@ impl GeodesicField {
     ) -> PyResult<Bound<'py, PyList>> {
         let mesh = self.mesh();
         let edge = edge_id(mesh, edge)?;
-        let dicts = on_field!(self.field.borrow_dependent(), f => f
+        let dicts = on_field!(&self.field, f => f
             .wedges(edge)
             .iter()
             .map(|w| wedge_dict(py, w))
@@ -212,14 +247,14 @@ impl GeodesicField {
     /// peaks, seconds, and how the backend settled its decisions (``backend``: for ``exact``,
     /// certified zeros by proof and ``uncertified`` decisions with their places).
     fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let stats = on_field!(self.field.borrow_dependent(), f => f.stats());
+        let stats = on_field!(&self.field, f => f.stats());
         let json =
             serde_json::to_string(stats).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
         py.import("json")?.call_method1("loads", (json,))
     }
 
     fn __repr__(&self) -> String {
-        let reached = on_field!(self.field.borrow_dependent(), f => f
+        let reached = on_field!(&self.field, f => f
             .vertex_distances()
             .iter()
             .filter(|d| d.is_finite())
@@ -268,10 +303,10 @@ fn wedge_dict<'py, S: Scalar>(py: Python<'py>, w: &Wedge<S>) -> PyResult<Bound<'
     dict.set_item("source_x", w.source_x.to_f64())?;
     dict.set_item("source_y", w.source_y.to_f64())?;
     match w.pseudo_source {
-        PseudoSource::Source(k) => dict.set_item("pseudo_source", ("source", k))?,
+        PseudoSource::Source(k) => dict.set_item("pseudo_source", ("source", k.0))?,
         PseudoSource::Vertex(v) => dict.set_item("pseudo_source", ("vertex", v.0))?,
     }
-    dict.set_item("source", w.source)?;
+    dict.set_item("source", w.source.0)?;
     Ok(dict)
 }
 
@@ -306,4 +341,14 @@ impl GeodesicPath {
             self.source
         )
     }
+}
+
+/// `digits` certified decimal digits of `value`, or a `RuntimeError` naming `what`.
+fn certified_digits(value: &Real, digits: u32, what: &str) -> PyResult<String> {
+    value.to_decimal(digits).ok_or_else(|| {
+        PyRuntimeError::new_err(format!(
+            "{what}: {digits} certified digits are out of reach (an uncertified decision, or \
+             beyond the precision cap)"
+        ))
+    })
 }

@@ -1,7 +1,7 @@
 //! The stateful solver: a validated mesh and a backend, from which fields are propagated, one
 //! at a time or one per source on every core.
 
-use crate::field::{AnyField, GeodesicField, OwnedField};
+use crate::field::{AnyField, GeodesicField};
 use crate::input::{self, rows_of_three, value_error};
 use exact_geodesics::scalar::{Adaptive, Backend, Real, Scalar};
 use exact_geodesics::{
@@ -72,11 +72,7 @@ impl GeodesicSolver {
         let options = input::options(max_distance, self.precision_cap)?;
         let (mesh, backend) = (Arc::clone(&self.mesh), self.backend);
         let field = py
-            .detach(move || {
-                OwnedField::try_new(mesh, |mesh| {
-                    AnyField::propagate(mesh, backend, &sources, &options)
-                })
-            })
+            .detach(move || AnyField::propagate(&mesh, backend, &sources, &options))
             .map_err(value_error)?;
         Ok(GeodesicField::new(field, backend, self.precision_cap))
     }

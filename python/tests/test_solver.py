@@ -251,3 +251,29 @@ def test_propagation_releases_the_gil():
     seconds = time.perf_counter() - started
     # Holding the GIL for the whole call would leave this thread a few switch intervals.
     assert seconds > 0.2 and spins > 10_000, (seconds, spins)
+
+
+def test_exact_backend_gives_certified_digits_of_sqrt5():
+    import decimal
+
+    vertices, triangles = eg.generate_mesh("cube")
+    field = eg.GeodesicSolver(vertices, triangles, backend="exact").propagate(0)
+    decimal.getcontext().prec = 60
+    root5 = decimal.Decimal(5).sqrt()
+    digits = field.exact_distances(digits=40)
+    assert digits[0] == "0"
+    far = decimal.Decimal(digits[6])
+    # Within one unit of the 40th significant digit (the 39th decimal place of 2.23...).
+    assert abs(far - root5) <= decimal.Decimal("1e-39")
+    at = decimal.Decimal(field.exact_distance_at(6, digits=40))
+    assert abs(at - root5) <= decimal.Decimal("1e-39")
+
+
+def test_exact_values_are_refused_for_float_backends():
+    vertices, triangles = eg.generate_mesh("cube")
+    field = eg.GeodesicSolver(vertices, triangles).propagate(0)
+    with pytest.raises(ValueError, match="exact backend"):
+        field.exact_distances()
+    exact = eg.GeodesicSolver(vertices, triangles, backend="exact").propagate(0)
+    with pytest.raises(ValueError, match="digits"):
+        exact.exact_distances(digits=0)

@@ -17,7 +17,7 @@
 
 use super::measure::{distance_f64, distance_in, EdgePaths};
 use crate::mesh::shapes::SplitMix64;
-use crate::mesh::{FaceId, TriMesh, VertexId};
+use crate::mesh::{FaceId, SourceId, TriMesh, VertexId};
 use crate::mmp::{propagate, GeodesicField, PropagateOptions, SurfacePoint, TraceError};
 use crate::scalar::{Scalar, Sign};
 use serde::Serialize;
@@ -56,13 +56,16 @@ pub enum ViolationKind {
 }
 
 impl ViolationKind {
-    /// Whether the invariant measures the accuracy of distances and paths (bounds, symmetry,
-    /// agreement, traces), rather than what every backend owes on any input (no panic or
-    /// error, zero at the source, infinity exactly where no edge path reaches).
+    /// Whether the invariant measures the accuracy of distances and paths against each other
+    /// (symmetry, agreement, traces), rather than what every backend owes on any input (no
+    /// panic or error, zero at the source, the straight-line and edge-path bounds, infinity
+    /// exactly where no edge path reaches).
     pub fn measures_accuracy(self) -> bool {
         !matches!(
             self,
             ViolationKind::SourceNotZero
+                | ViolationKind::BelowStraightLine
+                | ViolationKind::AboveEdgePath
                 | ViolationKind::ReachableInfinite
                 | ViolationKind::UnreachableFinite
                 | ViolationKind::Error
@@ -387,7 +390,7 @@ fn check_trace<S: Scalar, R: Scalar>(
             )
         });
     }
-    if path.simplices.last() != Some(&SurfacePoint::Vertex(a)) || path.source != 0 {
+    if path.simplices.last() != Some(&SurfacePoint::Vertex(a)) || path.source != SourceId(0) {
         findings.add(ViolationKind::TraceWrongEnd, || {
             format!(
                 "from {a} to {target:?}: the path ends at {:?}",

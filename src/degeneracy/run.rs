@@ -60,9 +60,9 @@ pub struct CaseReport {
     /// Whether the mesh lies beyond the float backends' documented accuracy (its edge lengths
     /// span more than [`ValidationReport::WIDE_SPAN`], which the report warns of): no backend is
     /// then compared with a float reference nor its path's f64 points measured against its
-    /// distance, and a float backend is held only to the
-    /// invariants that do not measure accuracy (no panic or error, zero at the source,
-    /// reachability), never to bounds, symmetry or traces.
+    /// distance, and a float backend is held to the invariants that do not measure accuracy
+    /// (no panic or error, zero at the source, the straight-line and edge-path bounds,
+    /// reachability), not to symmetry or traces.
     pub beyond_float_range: bool,
 }
 

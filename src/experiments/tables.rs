@@ -80,7 +80,8 @@ pub struct Table1Row {
 }
 
 /// A row of Table 2 [LZT §6]: l(e) of the normalized model and wedges per unit length
-/// `mean w(e) / mean l(e)`.
+/// `mean w(e) / mean l(e)`, with the propagation time (the paper's Table 2 models are the large
+/// ones, where times compare best).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Table2Row {
     /// The model's name (its file or `gen:` spec).
@@ -103,6 +104,8 @@ pub struct Table2Row {
     pub wedges_mean: f64,
     /// Number of edges.
     pub edges: usize,
+    /// Propagation time in seconds, as in Table 1.
+    pub seconds: f64,
 }
 
 impl Table1Row {
@@ -161,7 +164,7 @@ min_angle_max,min_angle_mean,min_angle_min";
 impl Table2Row {
     /// The CSV header, in field order.
     pub const CSV_HEADER: &'static str = "model,backend,source,edge_length_mean,edge_length_std,\
-edge_length_max,edge_length_min,wedges_per_unit_length,wedges_mean,edges";
+edge_length_max,edge_length_min,wedges_per_unit_length,wedges_mean,edges,seconds";
 
     /// The row of `model` (a name) measured in `backend`.
     pub fn new(model: &str, backend: Backend, shape: &ModelShape, counts: &WedgeCounts) -> Self {
@@ -177,13 +180,14 @@ edge_length_max,edge_length_min,wedges_per_unit_length,wedges_mean,edges";
             wedges_per_unit_length: counts.per_edge.mean / l.mean,
             wedges_mean: counts.per_edge.mean,
             edges: shape.edges,
+            seconds: counts.seconds,
         }
     }
 
     /// The row as one CSV record (no line end), fields as in [`Self::CSV_HEADER`].
     pub fn csv_record(&self) -> String {
         format!(
-            "{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{}",
             csv_field(&self.model),
             self.backend.name(),
             self.source,
@@ -194,6 +198,7 @@ edge_length_max,edge_length_min,wedges_per_unit_length,wedges_mean,edges";
             self.wedges_per_unit_length,
             self.wedges_mean,
             self.edges,
+            self.seconds,
         )
     }
 }

@@ -5,6 +5,7 @@
 //! [`MeshError`], usable oddities a [`ValidationReport`].
 
 mod error;
+mod handle;
 mod ids;
 pub mod io;
 pub mod shapes;
@@ -13,7 +14,8 @@ mod validation;
 pub(crate) mod vector;
 
 pub use error::MeshError;
-pub use ids::{EdgeId, FaceId, VertexId};
+pub use handle::MeshHandle;
+pub use ids::{EdgeId, FaceId, Side, SourceId, VertexId};
 pub use topology::{Edge, Wing};
 pub use validation::{DuplicateFace, NonManifoldEdge, ValidationReport};
 pub(crate) use vector::normalizing_power;
@@ -126,6 +128,9 @@ impl TriMesh {
     }
 
     /// The position of a vertex.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     #[inline]
     pub fn position(&self, v: VertexId) -> [f64; 3] {
         self.positions[v.index()]
@@ -137,6 +142,9 @@ impl TriMesh {
     }
 
     /// The corners of a face.
+    ///
+    /// # Panics
+    /// If `f` is not a face of the mesh.
     #[inline]
     pub fn face(&self, f: FaceId) -> [VertexId; 3] {
         let c = self.faces[f.index()];
@@ -144,6 +152,9 @@ impl TriMesh {
     }
 
     /// The edge with the given id.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     #[inline]
     pub fn edge(&self, e: EdgeId) -> &Edge {
         &self.topology.edges[e.index()]
@@ -155,12 +166,18 @@ impl TriMesh {
     }
 
     /// Edge `i` of face `f`: the one from corner `i` to corner `i + 1` (mod 3).
+    ///
+    /// # Panics
+    /// If `f` is not a face of the mesh.
     #[inline]
     pub fn face_edges(&self, f: FaceId) -> [EdgeId; 3] {
         self.topology.face_edges[f.index()]
     }
 
     /// The edge joining two vertices, if there is one.
+    ///
+    /// # Panics
+    /// If `a` or `b` is not a vertex of the mesh.
     pub fn edge_between(&self, a: VertexId, b: VertexId) -> Option<EdgeId> {
         self.topology
             .vertex_edges(a)
@@ -170,16 +187,25 @@ impl TriMesh {
     }
 
     /// Faces incident to a vertex.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn vertex_faces(&self, v: VertexId) -> &[FaceId] {
         self.topology.vertex_faces(v)
     }
 
     /// Edges incident to a vertex.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn vertex_edges(&self, v: VertexId) -> &[EdgeId] {
         self.topology.vertex_edges(v)
     }
 
     /// Sum of the face angles at a vertex, in radians (0 for a vertex no face uses).
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn angle_sum(&self, v: VertexId) -> f64 {
         self.topology.angle_sum[v.index()]
     }
@@ -196,6 +222,9 @@ impl TriMesh {
     /// ends of an edge shorter than `1e-8` of its face's longest edge bend too: the rays through
     /// such an edge make windows narrower than a float backend keeps, and a path through one of
     /// its ends is then the best a float backend can offer (within the edge's length).
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn may_bend_geodesics(&self, v: VertexId) -> bool {
         /// Angle sums this close to 2 pi (relative) count as flat; acos-based sums carry ~1e-15.
         const FLAT_SLACK: f64 = 1e-9;
@@ -216,34 +245,58 @@ impl TriMesh {
 
     /// Whether the vertex lies on the boundary or where the surface is not a manifold: it joins
     /// several fans (a bowtie) or ends an edge shared by more than two faces.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn is_boundary_vertex(&self, v: VertexId) -> bool {
         self.topology.boundary_vertex[v.index()]
     }
 
     /// The face on side `side` of an edge (below [`TriMesh::side_count`]; sides 0 and 1 are
     /// [`Edge::faces`]), with its apex and its two other edges; `None` if that side has no face.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     #[inline]
-    pub fn wing(&self, e: EdgeId, side: usize) -> Option<&Wing> {
-        self.topology.wing(e, side)
+    pub fn wing(&self, e: EdgeId, side: Side) -> Option<&Wing> {
+        self.topology.wing(e, side.index())
     }
 
     /// The number of sides of an edge: 2 (side 1 is empty on the boundary), or one per face on
     /// an edge shared by more than two faces.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     #[inline]
     pub fn side_count(&self, e: EdgeId) -> usize {
         2 + self.topology.extra_faces(e).len()
     }
 
+    /// The sides of an edge, in order ([`TriMesh::side_count`] of them).
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
+    #[inline]
+    pub fn sides(&self, e: EdgeId) -> impl Iterator<Item = Side> {
+        (0..self.side_count(e)).map(Side::from_index)
+    }
+
     /// The faces of an edge, side by side.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     pub fn edge_faces(&self, e: EdgeId) -> impl Iterator<Item = FaceId> + '_ {
         let extra = self.topology.extra_faces(e).iter().copied();
         self.edge(e).faces.into_iter().flatten().chain(extra)
     }
 
     /// The side of edge `e` on which face `f` lies, if `f` is one of its faces.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     #[inline]
-    pub fn side_of(&self, e: EdgeId, f: FaceId) -> Option<usize> {
-        match self.edge(e).faces.iter().position(|&g| g == Some(f)) {
+    pub fn side_of(&self, e: EdgeId, f: FaceId) -> Option<Side> {
+        let index = match self.edge(e).faces.iter().position(|&g| g == Some(f)) {
             Some(side) => Some(side),
             None => self
                 .topology
@@ -251,14 +304,15 @@ impl TriMesh {
                 .iter()
                 .position(|&g| g == f)
                 .map(|i| i + 2),
-        }
+        };
+        index.map(Side::from_index)
     }
 
     /// Where the data of side `side` of edge `e` lives in an array with one entry per side
     /// of every edge (of length [`TriMesh::side_slot_count`]).
     #[inline]
-    pub(crate) fn side_slot(&self, e: EdgeId, side: usize) -> usize {
-        self.topology.side_slot(e, side)
+    pub(crate) fn side_slot(&self, e: EdgeId, side: Side) -> usize {
+        self.topology.side_slot(e, side.index())
     }
 
     /// The number of sides of all edges.
@@ -313,6 +367,9 @@ impl TriMesh {
     }
 
     /// Whether a face is degenerate (listed in [`ValidationReport::zero_area_faces`]).
+    ///
+    /// # Panics
+    /// If `f` is not a face of the mesh.
     pub fn is_degenerate_face(&self, f: FaceId) -> bool {
         self.report.zero_area_faces.binary_search(&f).is_ok()
     }

@@ -66,7 +66,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// backend would keep a wedge that long ([`Scalar::has_extent`]).
     pub fn check_coverage(&self) -> CoverageReport {
         let mut report = CoverageReport::default();
-        for (i, wedges) in self.wedges.iter().enumerate() {
+        for (i, wedges) in self.wedges.per_edge().enumerate() {
             if wedges.is_empty() {
                 continue;
             }

@@ -1,12 +1,14 @@
 //! The result of a propagation: the final wedges on every edge and the vertex distances.
 
+use super::edge_wedges::EdgeWedges;
 use super::propagate::VertexDistance;
 use super::source::SurfacePoint;
 use super::stats::Stats;
 use super::unfold::Unfolding;
 use super::wedge::Wedge;
-use crate::mesh::{EdgeId, TriMesh, VertexId};
+use crate::mesh::{EdgeId, MeshHandle, SourceId, TriMesh, VertexId};
 use crate::scalar::Scalar;
+use std::sync::Arc;
 
 /// The geodesic distance field of a set of sources: the 1D subdivision of the edges into final
 /// wedges [LZT §2] and everything that can be read from it.
@@ -18,11 +20,11 @@ use crate::scalar::Scalar;
 /// Two opposite corners of the unit cube as sources: every other corner is an edge away from
 /// one of them, and a point inside a face is answered as a vertex is.
 /// ```
-/// use exact_geodesics::{mesh::shapes, propagate, FaceId, PropagateOptions, SurfacePoint, VertexId};
+/// use exact_geodesics::{mesh::shapes, propagate, FaceId, PropagateOptions, SourceId, SurfacePoint, VertexId};
 /// let cube = shapes::cube();
 /// let sources = [SurfacePoint::Vertex(VertexId(0)), SurfacePoint::Vertex(VertexId(6))];
 /// let field = propagate::<f64>(&cube, &sources, &PropagateOptions::default())?;
-/// assert_eq!(field.nearest_source(VertexId(6)), Some(1));
+/// assert_eq!(field.nearest_source(VertexId(6)), Some(SourceId(1)));
 /// for v in [1, 2, 3, 4, 5, 7].map(VertexId) {
 ///     assert!((field.vertex_distance(v) - 1.0).abs() < 1e-12);
 /// }
@@ -30,11 +32,16 @@ use crate::scalar::Scalar;
 /// assert!(field.distance_at(&centre)? < 1.0);
 /// # Ok::<(), exact_geodesics::PointError>(())
 /// ```
+///
+/// A field borrows its mesh (`'m`) when made by [`propagate`](crate::propagate); one made by
+/// [`propagate_shared`](crate::propagate_shared) shares it (`GeodesicField<'static, S>`) and can be
+/// stored beside it, cloned and sent to other threads.
+#[derive(Clone, Debug)]
 pub struct GeodesicField<'m, S: Scalar> {
-    pub(crate) mesh: &'m TriMesh,
+    mesh: MeshHandle<'m>,
     pub(crate) unfolding: Unfolding<S>,
     pub(crate) sources: Vec<SurfacePoint>,
-    pub(crate) wedges: Vec<Vec<Wedge<S>>>,
+    pub(crate) wedges: EdgeWedges<S>,
     pub(crate) vertices: Vec<Option<VertexDistance<S>>>,
     pub(crate) stats: Stats,
 }
@@ -44,12 +51,12 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
         mesh: &'m TriMesh,
         unfolding: Unfolding<S>,
         sources: Vec<SurfacePoint>,
-        wedges: Vec<Vec<Wedge<S>>>,
+        wedges: EdgeWedges<S>,
         vertices: Vec<Option<VertexDistance<S>>>,
         stats: Stats,
     ) -> Self {
         GeodesicField {
-            mesh,
+            mesh: MeshHandle::Borrowed(mesh),
             unfolding,
             sources,
             wedges,
@@ -59,8 +66,22 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     }
 
     /// The mesh the field lives on.
-    pub fn mesh(&self) -> &'m TriMesh {
-        self.mesh
+    #[inline]
+    pub fn mesh(&self) -> &TriMesh {
+        &self.mesh
+    }
+
+    /// The same field holding `mesh`, shared, instead of its borrow: it then has no lifetime of
+    /// its own. `None` if `mesh` is not the mesh the field was propagated on (the same object).
+    pub fn into_shared(self, mesh: Arc<TriMesh>) -> Option<GeodesicField<'static, S>> {
+        std::ptr::eq(&*self.mesh, &*mesh).then(|| GeodesicField {
+            mesh: MeshHandle::Shared(mesh),
+            unfolding: self.unfolding,
+            sources: self.sources,
+            wedges: self.wedges,
+            vertices: self.vertices,
+            stats: self.stats,
+        })
     }
 
     /// The sources, validated and in canonical form, in the order given.
@@ -81,6 +102,9 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     }
 
     /// The geodesic distance of a vertex to its nearest source; `f64::INFINITY` if unreachable.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn vertex_distance(&self, v: VertexId) -> f64 {
         self.vertices[v.index()]
             .as_ref()
@@ -97,6 +121,9 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     }
 
     /// A vertex's distance in the backend's own number type; `None` if unreachable.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
     pub fn vertex_distance_exact(&self, v: VertexId) -> Option<S> {
         self.vertices[v.index()]
             .as_ref()
@@ -104,16 +131,22 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     }
 
     /// Index (into [`sources`](Self::sources)) of the source nearest to a vertex.
-    pub fn nearest_source(&self, v: VertexId) -> Option<usize> {
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
+    pub fn nearest_source(&self, v: VertexId) -> Option<SourceId> {
         self.vertices[v.index()].as_ref().map(|d| d.source)
     }
 
     /// The final wedges on an edge, sorted along it (from its `vertices[0]`), in the model's
     /// units.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     pub fn wedges(&self, e: EdgeId) -> Vec<Wedge<S>> {
-        let wedges = &self.wedges[e.index()];
+        let wedges = self.wedges.on(e);
         if self.mesh.unit_scale() == 1.0 {
-            return wedges.clone();
+            return wedges.to_vec();
         }
         let factor = self.model_factor();
         wedges.iter().map(|w| w.scaled(&factor)).collect()
@@ -121,10 +154,13 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
 
     /// The number of final wedges on every edge.
     pub fn wedge_counts(&self) -> Vec<usize> {
-        self.wedges.iter().map(Vec::len).collect()
+        self.wedges.per_edge().map(<[Wedge<S>]>::len).collect()
     }
 
     /// The length of an edge in the backend's number type.
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
     pub fn edge_length(&self, e: EdgeId) -> S {
         self.to_model(self.unfolding.length(e))
     }

@@ -268,6 +268,9 @@ fn cut_into_pieces<'a, S: Scalar>(
 /// The wedges of an edge after a new wedge meets them [LZT §4], outside a propagation: the
 /// Section 4 cases on hand-made wedges. `existing` are the edge's wedges, sorted and disjoint;
 /// the result is sorted and disjoint too, with the eq.-(2) cases met.
+///
+/// Unstable: an entry to the engine's internals for reproducing [LZT §4] and for tests; its
+/// signature may change with the engine.
 pub fn intersect<S: Scalar>(
     edge_length: &S,
     existing: &[Wedge<S>],
@@ -401,11 +404,11 @@ impl<S: Scalar> Engine<'_, S> {
                 Owner::New => {
                     if S::within(&zero, &piece.lo, &piece.hi, length) {
                         let d = S::kept(&kept.at_ends[0]).unwrap_or_else(|| mine.at(&zero));
-                        self.improve_vertex(v0, d, w.source);
+                        self.offer_vertex(v0, d, w);
                     }
                     if S::within(length, &piece.lo, &piece.hi, length) {
                         let d = S::kept(&kept.at_ends[1]).unwrap_or_else(|| mine.at(length));
-                        self.improve_vertex(v1, d, w.source);
+                        self.offer_vertex(v1, d, w);
                     }
                     let piece_kept = if anchored(kept) {
                         kept.trimmed(keeps(w, &piece.lo, &piece.hi))

@@ -4,6 +4,7 @@
 //! subdivision from which distances are read and paths traced back (Section 2).
 
 mod coverage;
+mod edge_wedges;
 mod field;
 mod intersect;
 mod propagate;
@@ -20,7 +21,8 @@ pub use coverage::{CoverageIssue, CoverageReport};
 pub use field::GeodesicField;
 pub use intersect::intersect;
 pub use propagate::{
-    geodesic_distances, propagate, propagate_with_progress, Progress, PropagateOptions,
+    geodesic_distances, propagate, propagate_shared, propagate_with_progress, Progress,
+    PropagateOptions,
 };
 pub use source::{PointError, SurfacePoint};
 pub use stats::{Eq2Counts, Eq2Decision, Stats};
@@ -28,4 +30,4 @@ pub use subdivision::{
     face_subdivision, polygon_area, Bisector, BisectorKind, FaceSubdivision, Point2, Region,
 };
 pub use trace_back::{GeodesicPath, TraceError};
-pub use wedge::{PseudoSource, Side, Wedge};
+pub use wedge::{PseudoSource, Wedge};

@@ -1,17 +1,19 @@
 //! Continuous Dijkstra over wedges [SSK+05 §4, LZT §2]: a priority queue of wedges ordered by
 //! the smallest distance each gives, and of vertices waiting to act as pseudo-sources.
 
+use super::edge_wedges::EdgeWedges;
 use super::field::GeodesicField;
 use super::intersect::Scratch;
 use super::provenance::{Anchor, Provenance};
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::unfold::{FaceLayout, Planar, Unfolding};
-use super::wedge::{PseudoSource, Side, Wedge};
-use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
+use super::wedge::{PseudoSource, Wedge};
+use crate::mesh::{EdgeId, FaceId, Side, SourceId, TriMesh, VertexId};
 use crate::scalar::{Scalar, Sign, Site};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
+use std::sync::Arc;
 use std::time::Instant;
 
 /// Options of a propagation.
@@ -93,6 +95,33 @@ pub fn propagate<'m, S: Scalar>(
     propagate_with_progress(mesh, sources, options, |_| {})
 }
 
+/// [`propagate`] on a shared mesh: the field holds the `Arc` instead of a borrow, so it can be
+/// stored beside the mesh, cloned, sent to other threads and queried for as long as it lives.
+///
+/// # Errors
+/// As [`propagate`].
+///
+/// # Example
+/// ```
+/// use exact_geodesics::{mesh::shapes, propagate_shared, PropagateOptions, SurfacePoint, VertexId};
+/// use std::sync::Arc;
+/// let cube = Arc::new(shapes::cube());
+/// let field = propagate_shared::<f64>(&cube, &[SurfacePoint::Vertex(VertexId(0))], &PropagateOptions::default())?;
+/// let worker = std::thread::spawn(move || field.vertex_distance(VertexId(6)));
+/// assert!((worker.join().unwrap() - 5f64.sqrt()).abs() < 1e-12);
+/// # Ok::<(), exact_geodesics::PointError>(())
+/// ```
+pub fn propagate_shared<S: Scalar>(
+    mesh: &Arc<TriMesh>,
+    sources: &[SurfacePoint],
+    options: &PropagateOptions,
+) -> Result<GeodesicField<'static, S>, PointError> {
+    let field = propagate::<S>(mesh, sources, options)?;
+    Ok(field
+        .into_shared(Arc::clone(mesh))
+        .expect("propagated on this mesh"))
+}
+
 /// The geodesic distance of every vertex, in file order, from the nearest of `sources`
 /// (`f64::INFINITY` where unreachable): [`propagate`] and
 /// [`GeodesicField::vertex_distances`] in one call, for the common case.
@@ -135,15 +164,16 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     let started = Instant::now();
     S::begin_run(options.precision_cap);
     S::take_counts();
-    let mut engine = Engine::new(mesh, options);
-    for (k, point) in sources.iter().enumerate() {
-        engine.emit_source(k, point);
+    let mut engine = Engine::new(mesh, options, sources);
+    for k in 0..engine.sources.len() {
+        let point = engine.sources[k];
+        engine.emit_source(SourceId(k as u32), &point);
     }
     engine.run(&mut progress);
     engine.stats.propagation_seconds = started.elapsed().as_secs_f64();
     engine.stats.backend = S::take_counts();
     S::locate(Site::ANYWHERE);
-    Ok(engine.finish(sources))
+    Ok(engine.finish())
 }
 
 /// A wedge about to be born on an edge: the edge, the ends of its range (unsorted), its
@@ -170,7 +200,7 @@ pub(crate) struct Slot<S: Scalar> {
 pub(crate) struct VertexDistance<S> {
     pub(crate) distance: S,
     pub(crate) approx: f64,
-    pub(crate) source: usize,
+    pub(crate) source: SourceId,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -206,6 +236,7 @@ impl Ord for Event {
 pub(crate) struct Engine<'m, S: Scalar> {
     pub(crate) mesh: &'m TriMesh,
     pub(crate) unfolding: Unfolding<S>,
+    sources: Vec<SurfacePoint>,
     pub(crate) slots: Vec<Slot<S>>,
     pub(crate) free: Vec<u32>,
     pub(crate) lists: Vec<Vec<u32>>,
@@ -222,7 +253,7 @@ pub(crate) struct Engine<'m, S: Scalar> {
 }
 
 impl<'m, S: Scalar> Engine<'m, S> {
-    fn new(mesh: &'m TriMesh, options: &PropagateOptions) -> Self {
+    fn new(mesh: &'m TriMesh, options: &PropagateOptions, sources: Vec<SurfacePoint>) -> Self {
         let unfolding = Unfolding::new(mesh);
         let max_distance = options
             .max_distance
@@ -230,6 +261,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         Engine {
             mesh,
             unfolding,
+            sources,
             slots: Vec::new(),
             free: Vec::new(),
             lists: vec![Vec::new(); mesh.edge_count()],
@@ -293,7 +325,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         });
     }
 
-    fn finish(self, sources: Vec<SurfacePoint>) -> GeodesicField<'m, S> {
+    fn finish(self) -> GeodesicField<'m, S> {
         let max = self.max_distance;
         let mut vertices = self.vertices;
         for v in vertices.iter_mut() {
@@ -301,27 +333,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 *v = None;
             }
         }
-        // Move the final wedges out of their slots: cloning them would double the peak memory.
-        let mut slots: Vec<Option<Wedge<S>>> =
-            self.slots.into_iter().map(|s| Some(s.wedge)).collect();
-        let wedges: Vec<Vec<Wedge<S>>> = self
-            .lists
-            .iter()
-            .map(|list| {
-                list.iter()
-                    .map(|&i| {
-                        slots[i as usize]
-                            .take()
-                            .expect("a wedge is in one list only")
-                    })
-                    .collect()
-            })
-            .collect();
-        drop(slots);
+        // Out of their slots and grouped by edge in place: copies would double the peak memory.
+        let arena = self.slots.into_iter().map(|s| s.wedge).collect();
+        let wedges = EdgeWedges::group(arena, &self.lists);
         GeodesicField::new(
             self.mesh,
             self.unfolding,
-            sources,
+            self.sources,
             wedges,
             vertices,
             self.stats,
@@ -345,7 +363,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// waits in the queue to act as a pseudo-source. Its twins (ends of its edges of length
     /// zero, the same point of the surface) take the same distance as it is, not a rounded
     /// copy of it.
-    pub(crate) fn improve_vertex(&mut self, v: VertexId, distance: S, source: usize) {
+    pub(crate) fn improve_vertex(&mut self, v: VertexId, distance: S, source: SourceId) {
         let slot = &mut self.vertices[v.index()];
         match slot {
             Some(known) if distance.compare_distance(&known.distance) != Ordering::Less => return,
@@ -377,8 +395,16 @@ impl<'m, S: Scalar> Engine<'m, S> {
         }
     }
 
+    /// A wedge's distance `d` at the vertex `v`, offered to it: no lower than its pseudo-source's
+    /// straight line to `v` in space, where the backend repairs rounding ([`Scalar::at_least`]).
+    pub(crate) fn offer_vertex(&mut self, v: VertexId, d: S, w: &Wedge<S>) {
+        let (mesh, unfolding, sources) = (self.mesh, &self.unfolding, &self.sources);
+        let d = S::at_least(d, || unfolding.straight_bound(mesh, w, v, sources));
+        self.improve_vertex(v, d, w.source);
+    }
+
     /// The initial wedges of a source [SSK+05 §4]: on every edge of every face containing it.
-    fn emit_source(&mut self, k: usize, point: &SurfacePoint) {
+    fn emit_source(&mut self, k: SourceId, point: &SurfacePoint) {
         let source = PseudoSource::Source(k);
         match *point {
             SurfacePoint::Vertex(v) => self.emit_source_vertex(v, k),
@@ -404,7 +430,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         }
     }
 
-    fn emit_source_vertex(&mut self, v: VertexId, k: usize) {
+    fn emit_source_vertex(&mut self, v: VertexId, k: SourceId) {
         self.improve_vertex(v, S::zero(), k);
         self.emit_from_vertex(v, S::zero(), PseudoSource::Source(k), k);
         self.pending_emission[v.index()] = false;
@@ -421,7 +447,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         mut done: Vec<FaceId>,
         sigma: S,
         source: PseudoSource,
-        k: usize,
+        k: SourceId,
     ) {
         let mesh = self.mesh;
         done.extend(faces.iter().copied());
@@ -448,14 +474,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                         }
                     }
                 }
-                self.add_wedge(
-                    g,
-                    at,
-                    Side::from_index(side),
-                    sigma.clone(),
-                    (source, k),
-                    None,
-                );
+                self.add_wedge(g, at, side, sigma.clone(), (source, k), None);
             }
         }
     }
@@ -464,7 +483,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// opposite it in each incident face, and along each incident edge. A vertex lying inside
     /// its opposite edge (the middle corner of a degenerate face) is a point of that edge as
     /// well, and sends wedges into the face beyond it as a source on an edge does.
-    fn emit_from_vertex(&mut self, v: VertexId, sigma: S, source: PseudoSource, k: usize) {
+    fn emit_from_vertex(&mut self, v: VertexId, sigma: S, source: PseudoSource, k: SourceId) {
         let mesh = self.mesh;
         let mut beyond = Vec::new();
         // The distance through the vertex to each neighbour, one value for every wedge of the
@@ -492,17 +511,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let g = mesh.face_edges(f)[(corner + 1) % 3];
             let side = mesh.side_of(g, f).expect("edge of the face");
             // None only for an opposite edge of length zero, which carries no wedge.
-            let Some((x, y)) = self.unfolding.apex(mesh, g, side).cloned() else {
+            let Some(at) = self.unfolding.apex_point(mesh, g, side) else {
                 continue;
             };
-            let at = Planar { x, y };
             // Only a degenerate face has a corner on its opposite edge's line.
             if mesh.is_degenerate_face(f) && self.unfolding.is_inside(g, &at) {
                 beyond.extend(mesh.edge_faces(g).filter(|&h| h != f));
             }
             let ends = mesh.edge(g).vertices.map(to);
-            let tau = Side::from_index(side);
-            self.add_wedge(g, at, tau, sigma.clone(), (source, k), Some(ends));
+            self.add_wedge(g, at, side, sigma.clone(), (source, k), Some(ends));
         }
         for &g in mesh.vertex_edges(v) {
             let x = if mesh.edge(g).vertices[0] == v {
@@ -529,7 +546,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         at: Planar<S>,
         tau: Side,
         sigma: S,
-        (source, k): (PseudoSource, usize),
+        (source, k): (PseudoSource, SourceId),
         at_ends: Option<[S::Kept<S>; 2]>,
     ) {
         let wedge = Wedge {
@@ -563,15 +580,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
         if w.source_y.sign() == Sign::Zero {
             return; // A wedge along its edge's line sees nothing beyond the line.
         }
-        for side in 0..self.mesh.side_count(w.edge) {
-            if side != w.tau.index() {
+        for side in self.mesh.sides(w.edge) {
+            if side != w.tau {
                 self.propagate_into(w, kept, side);
             }
         }
     }
 
     /// Propagates a wedge across the face on side `side` of its edge, if there is one.
-    fn propagate_into(&mut self, w: &Wedge<S>, kept: &Provenance<S>, side: usize) {
+    fn propagate_into(&mut self, w: &Wedge<S>, kept: &Provenance<S>, side: Side) {
         let mesh = self.mesh;
         let Some(layout) = FaceLayout::new(mesh, &self.unfolding, w.edge, side) else {
             return;
@@ -628,14 +645,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 return None;
             }
             let distance = S::kept(&kept.at_ends[i])?;
-            let (x, y) = self
-                .unfolding
-                .apex(mesh, g, mesh.side_of(g, face)?)?
-                .clone();
-            Some(Anchor {
-                point: Planar { x, y },
-                distance,
-            })
+            let point = self.unfolding.apex_point(mesh, g, mesh.side_of(g, face)?)?;
+            Some(Anchor { point, distance })
         };
         let (near, far) = (layout.wing.near, layout.wing.far);
         let to_near = |p: &Planar<S>| layout.to_near(p);
@@ -688,7 +699,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             children[1] = Some((far, positions, layout.to_far(&s), kept));
         }
         if let Some((v, d)) = apex {
-            self.improve_vertex(v, d, w.source);
+            self.offer_vertex(v, d, w);
         }
         for (g, [p0, p1], at, mut kept) in children.into_iter().flatten() {
             let (b0, b1) = if p0.compare(&p1) == Ordering::Greater {
@@ -697,7 +708,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             } else {
                 (p0, p1)
             };
-            let tau = Side::from_index(mesh.side_of(g, face).expect("edge of the face"));
+            let tau = mesh.side_of(g, face).expect("edge of the face");
             let child = Wedge {
                 edge: g,
                 b0,

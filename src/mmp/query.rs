@@ -6,7 +6,7 @@ use super::field::GeodesicField;
 use super::source::{PointError, SurfacePoint};
 use super::unfold::Planar;
 use super::wedge::Wedge;
-use crate::mesh::{EdgeId, FaceId, VertexId};
+use crate::mesh::{EdgeId, FaceId, SourceId, VertexId};
 use crate::scalar::{Scalar, Sign};
 use std::cmp::Ordering;
 
@@ -48,7 +48,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// # Errors
     /// [`PointError`] if the point is not a point of the mesh.
     pub fn distance_at(&self, point: &SurfacePoint) -> Result<f64, PointError> {
-        let point = point.validated(self.mesh)?;
+        let point = point.validated(self.mesh())?;
         Ok(self.best_at(&point).map_or(f64::INFINITY, |b| {
             self.unfolding.to_model(b.distance.to_f64())
         }))
@@ -60,7 +60,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// # Errors
     /// [`PointError`] if the point is not a point of the mesh.
     pub fn distance_at_exact(&self, point: &SurfacePoint) -> Result<Option<S>, PointError> {
-        let point = point.validated(self.mesh)?;
+        let point = point.validated(self.mesh())?;
         Ok(self.best_at(&point).map(|b| self.to_model(&b.distance)))
     }
 
@@ -69,10 +69,10 @@ impl<S: Scalar> GeodesicField<'_, S> {
     ///
     /// # Errors
     /// [`PointError`] if the point is not a point of the mesh.
-    pub fn nearest_source_at(&self, point: &SurfacePoint) -> Result<Option<usize>, PointError> {
-        let point = point.validated(self.mesh)?;
+    pub fn nearest_source_at(&self, point: &SurfacePoint) -> Result<Option<SourceId>, PointError> {
+        let point = point.validated(self.mesh())?;
         Ok(self.best_at(&point).and_then(|b| match b.via {
-            Via::Wedge { edge, wedge, .. } => Some(self.wedges[edge.index()][wedge].source),
+            Via::Wedge { edge, wedge, .. } => Some(self.wedges.on(edge)[wedge].source),
             Via::Vertex(v) => self.nearest_source(v),
         }))
     }
@@ -85,10 +85,10 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 via: Via::Vertex(v),
             });
         }
-        let p = self.unfolding.position(self.mesh, point);
+        let p = self.unfolding.position(self.mesh(), point);
         let mut best = None;
-        for face in point.faces(self.mesh) {
-            for edge in self.mesh.face_edges(face) {
+        for face in point.faces(self.mesh()) {
+            for edge in self.mesh().face_edges(face) {
                 let at = match *point {
                     // A point of the edge is on its line exactly, not at a rounded height.
                     SurfacePoint::Edge { edge: own, t }
@@ -99,7 +99,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                             y: S::zero(),
                         })
                     }
-                    _ => self.unfolding.planar(self.mesh, edge, &p),
+                    _ => self.unfolding.planar(self.mesh(), edge, &p),
                 };
                 let Some(at) = at else {
                     continue; // An edge of length zero carries no wedge.
@@ -108,9 +108,11 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     keep_better(&mut best, found);
                 }
             }
-            for v in self.mesh.face(face) {
+            for v in self.mesh().face(face) {
                 if let Some(d) = &self.vertices[v.index()] {
-                    let q = self.unfolding.position(self.mesh, &SurfacePoint::Vertex(v));
+                    let q = self
+                        .unfolding
+                        .position(self.mesh(), &SurfacePoint::Vertex(v));
                     let gap = [0, 1, 2].map(|i| q[i].clone() - &p[i]);
                     let len = (gap[0].clone() * &gap[0]
                         + gap[1].clone() * &gap[1]
@@ -138,15 +140,15 @@ impl<S: Scalar> GeodesicField<'_, S> {
         at: &Planar<S>,
         accept: impl Fn(&Wedge<S>) -> bool,
     ) -> Option<Best<S>> {
-        let side = self.mesh.side_of(edge, face)?;
+        let side = self.mesh().side_of(edge, face)?;
         let length = self.unfolding.length(edge);
         let mut best = None;
-        for (i, w) in self.wedges[edge.index()].iter().enumerate() {
+        for (i, w) in self.wedges.on(edge).iter().enumerate() {
             if !accept(w) {
                 continue;
             }
             let on_line = at.y.sign() == Sign::Zero;
-            let same_side = w.tau.index() == side;
+            let same_side = w.tau == side;
             // Where the ray from the pseudo-source to the point crosses the edge; `None` for
             // the pseudo-source itself (a source inside a face or an edge), which every wedge
             // of it reaches at its sigma, whatever range the wedge kept.

@@ -199,6 +199,10 @@ impl SurfacePoint {
     }
 
     /// The point's position in space.
+    ///
+    /// # Panics
+    /// If the point names a vertex, edge or face the mesh does not have (see
+    /// [`SurfacePoint::validated`]).
     pub fn position(&self, mesh: &TriMesh) -> [f64; 3] {
         match *self {
             SurfacePoint::Vertex(v) => mesh.position(v),
@@ -214,6 +218,9 @@ impl SurfacePoint {
     }
 
     /// The faces that contain the point (one, those of an edge, or a vertex's star).
+    ///
+    /// # Panics
+    /// As [`SurfacePoint::position`].
     pub fn faces(&self, mesh: &TriMesh) -> Vec<FaceId> {
         match *self {
             SurfacePoint::Vertex(v) => mesh.vertex_faces(v).to_vec(),

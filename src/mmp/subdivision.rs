@@ -172,6 +172,9 @@ impl FaceSubdivision {
 }
 
 /// The subdivision of `face` induced by the final wedges on its three edges [LZT Property 4].
+///
+/// # Panics
+/// If `face` is not a face of the field's mesh.
 pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -> FaceSubdivision {
     let mesh = field.mesh();
     let corners = mesh.face(face);
@@ -212,7 +215,7 @@ pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -
         };
         for w in field.wedges(e) {
             let (x, y) = (w.source_x.to_f64(), w.source_y.to_f64());
-            let inside = mesh.side_of(e, face) == Some(w.tau.index());
+            let inside = mesh.side_of(e, face) == Some(w.tau);
             let h = if inside { y } else { -y };
             let mut position = [
                 p0[0] + x * u[0] + h * inward[0],
@@ -220,7 +223,7 @@ pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -
             ];
             let vertex = match w.pseudo_source {
                 PseudoSource::Vertex(v) => Some(v),
-                PseudoSource::Source(k) => match field.sources()[k] {
+                PseudoSource::Source(k) => match field.sources()[k.index()] {
                     super::SurfacePoint::Vertex(v) => Some(v),
                     _ => None,
                 },

@@ -6,9 +6,9 @@
 use super::field::GeodesicField;
 use super::query::{Best, Via};
 use super::source::{PointError, SurfacePoint};
-use super::unfold::{FaceLayout, Planar};
+use super::unfold::{Apex, FaceLayout, Planar};
 use super::wedge::{PseudoSource, Wedge};
-use crate::mesh::{EdgeId, FaceId, VertexId};
+use crate::mesh::{EdgeId, FaceId, SourceId, VertexId};
 use crate::scalar::{Scalar, Sign};
 use serde::Serialize;
 use std::cmp::Ordering;
@@ -24,7 +24,7 @@ pub struct GeodesicPath {
     /// The geodesic distance of the target, as the field gives it.
     pub distance: f64,
     /// Index of the source the path ends at.
-    pub source: usize,
+    pub source: SourceId,
 }
 
 impl GeodesicPath {
@@ -95,13 +95,13 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// [`TraceError::Unreachable`] if no source reaches the target, [`TraceError::Point`] for an
     /// invalid target, [`TraceError::Lost`] if rounding sends the walk astray.
     pub fn trace_back(&self, target: &SurfacePoint) -> Result<GeodesicPath, TraceError> {
-        let target = target.validated(self.mesh)?;
+        let target = target.validated(self.mesh())?;
         let best = self.best_at(&target).ok_or(TraceError::Unreachable)?;
         let distance = self.unfolding.to_model(best.distance.to_f64());
         let mut simplices = vec![target];
         let mut via = best.via;
         let mut start = None;
-        let budget = 4 * self.mesh.face_count() + 16;
+        let budget = 4 * self.mesh().face_count() + 16;
         for _ in 0..budget {
             let pseudo_source = match via {
                 Via::Vertex(v) => {
@@ -148,7 +148,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     face,
                     at,
                 } => {
-                    let w = &self.wedges[edge.index()][wedge];
+                    let w = &self.wedges.on(edge)[wedge];
                     let end = match self.enter(edge, wedge, face, at, start, &mut simplices)? {
                         Step::Walk(walk) => {
                             self.walk_to(walk, w.pseudo_source, &mut simplices, budget)?
@@ -164,7 +164,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                         // (a point of the edge is seen alike from each of its faces).
                         WalkEnd::Edge { edge, x } => {
                             let at = Planar { x, y: S::zero() };
-                            let face = self.mesh.edge_faces(edge).next().expect("a face");
+                            let face = self.mesh().edge_faces(edge).next().expect("a face");
                             via = self
                                 .best_through_edge(edge, face, &at, |_| true)
                                 .ok_or_else(|| TraceError::Lost {
@@ -179,7 +179,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             };
             match pseudo_source {
                 PseudoSource::Source(k) => {
-                    push_point(&mut simplices, self.sources[k]);
+                    push_point(&mut simplices, self.sources[k.index()]);
                     return Ok(self.finish(simplices, distance, k));
                 }
                 PseudoSource::Vertex(v) => via = Via::Vertex(v),
@@ -190,9 +190,14 @@ impl<S: Scalar> GeodesicField<'_, S> {
         })
     }
 
-    fn finish(&self, simplices: Vec<SurfacePoint>, distance: f64, source: usize) -> GeodesicPath {
+    fn finish(
+        &self,
+        simplices: Vec<SurfacePoint>,
+        distance: f64,
+        source: SourceId,
+    ) -> GeodesicPath {
         GeodesicPath {
-            points: simplices.iter().map(|p| p.position(self.mesh)).collect(),
+            points: simplices.iter().map(|p| p.position(self.mesh())).collect(),
             simplices,
             distance,
             source,
@@ -206,9 +211,9 @@ impl<S: Scalar> GeodesicField<'_, S> {
         let mut next = 0;
         while next < group.len() {
             let w = group[next].0;
-            for &e in self.mesh.vertex_edges(w) {
+            for &e in self.mesh().vertex_edges(w) {
                 if self.unfolding.is_zero_length(e) {
-                    let u = self.mesh.edge(e).other(w).expect("an edge of the vertex");
+                    let u = self.mesh().edge(e).other(w).expect("an edge of the vertex");
                     if group.iter().all(|&(x, _)| x != u) {
                         group.push((u, Some(next)));
                     }
@@ -222,16 +227,17 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// Orders two arrivals at a vertex: the shorter first and, on a tie, the one not through
     /// a degenerate face (where a walk has no room to find its way).
     fn better_arrival(&self, a: &Best<S>, b: &Best<S>) -> Ordering {
-        let degenerate = |x: &Best<S>| matches!(x.via, Via::Wedge { face, .. } if self.mesh.is_degenerate_face(face));
+        let degenerate = |x: &Best<S>| matches!(x.via, Via::Wedge { face, .. } if self.mesh().is_degenerate_face(face));
         a.distance
             .compare_distance(&b.distance)
             .then(degenerate(a).cmp(&degenerate(b)))
     }
 
-    fn source_at_vertex(&self, v: VertexId) -> Option<usize> {
+    fn source_at_vertex(&self, v: VertexId) -> Option<SourceId> {
         self.sources
             .iter()
             .position(|s| *s == SurfacePoint::Vertex(v))
+            .map(|k| SourceId(k as u32))
     }
 
     /// How a vertex was reached, excluding the wedges it (or a twin, in `twins`) emitted itself: wedges on the opposite
@@ -257,21 +263,21 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 }
             }
         };
-        for &face in self.mesh.vertex_faces(v) {
-            let corner = self.mesh.face(face).iter().position(|&c| c == v)?;
-            let edge = self.mesh.face_edges(face)[(corner + 1) % 3];
-            let Some(side) = self.mesh.side_of(edge, face) else {
+        for &face in self.mesh().vertex_faces(v) {
+            let corner = self.mesh().face(face).iter().position(|&c| c == v)?;
+            let edge = self.mesh().face_edges(face)[(corner + 1) % 3];
+            let Some(side) = self.mesh().side_of(edge, face) else {
                 continue;
             };
             // No apex on an opposite edge of length zero, which carries no wedge.
-            let Some((x, y)) = self.unfolding.apex(self.mesh, edge, side).cloned() else {
+            let Some(at) = self.unfolding.apex_point(self.mesh(), edge, side) else {
                 continue;
             };
-            let beyond = |w: &Wedge<S>| !own(w) && w.tau.index() != side;
-            consider(self.best_through_edge(edge, face, &Planar { x, y }, beyond));
+            let beyond = |w: &Wedge<S>| !own(w) && w.tau != side;
+            consider(self.best_through_edge(edge, face, &at, beyond));
         }
-        for &edge in self.mesh.vertex_edges(v) {
-            let e = self.mesh.edge(edge);
+        for &edge in self.mesh().vertex_edges(v) {
+            let e = self.mesh().edge(edge);
             let x = if e.vertices[0] == v {
                 S::zero()
             } else {
@@ -279,7 +285,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             };
             let at = Planar { x, y: S::zero() };
             let arrives = |w: &Wedge<S>| !own(w) && self.ray_enters_corner(w, &at);
-            for face in self.mesh.edge_faces(edge) {
+            for face in self.mesh().edge_faces(edge) {
                 consider(self.best_through_edge(edge, face, &at, arrives));
             }
         }
@@ -301,7 +307,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 w.source_x.compare(&at.x) != Ordering::Greater
             };
         }
-        let Some((cx, h)) = self.unfolding.apex(self.mesh, w.edge, w.tau.index()) else {
+        let Some(Apex { x: cx, h, .. }) = self.unfolding.apex(self.mesh(), w.edge, w.tau) else {
             return false;
         };
         // u runs along the edge away from the vertex, c to the apex, d to the pseudo-source.
@@ -331,17 +337,17 @@ impl<S: Scalar> GeodesicField<'_, S> {
         start: Option<VertexId>,
         simplices: &mut Vec<SurfacePoint>,
     ) -> Result<Step<S>, TraceError> {
-        let w = &self.wedges[edge.index()][wedge];
-        let e = self.mesh.edge(edge);
-        let side = self.mesh.side_of(edge, face).expect("face of the edge");
+        let w = &self.wedges.on(edge)[wedge];
+        let e = self.mesh().edge(edge);
+        let side = self.mesh().side_of(edge, face).expect("face of the edge");
         let s = w.source_point();
         let lost = || TraceError::Lost {
             near: format!("{edge}"),
         };
         // The face the wedge came through.
         let wedge_face = || {
-            self.mesh
-                .wing(edge, w.tau.index())
+            self.mesh()
+                .wing(edge, w.tau)
                 .map(|wing| wing.face)
                 .ok_or_else(lost)
         };
@@ -370,7 +376,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 start,
             }));
         }
-        if w.tau.index() == side || w.source_y.sign() == Sign::Zero {
+        if w.tau == side || w.source_y.sign() == Sign::Zero {
             return Ok(Step::Walk(Walk {
                 edge,
                 face,
@@ -399,7 +405,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// The end of `edge` at position `x`, if the backend cannot tell `x` from it.
     fn end_vertex(&self, edge: EdgeId, x: &S) -> Option<VertexId> {
         let length = self.unfolding.length(edge);
-        let [v0, v1] = self.mesh.edge(edge).vertices;
+        let [v0, v1] = self.mesh().edge(edge).vertices;
         if !S::has_extent(&S::zero(), x, length) {
             Some(v0)
         } else if !S::has_extent(x, length, length) {
@@ -425,14 +431,14 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 return Ok(WalkEnd::PseudoSource);
             }
             let side = self
-                .mesh
+                .mesh()
                 .side_of(walk.edge, walk.face)
                 .expect("face of the edge");
             let lost = || TraceError::Lost {
                 near: format!("{}", walk.face),
             };
             let layout =
-                FaceLayout::new(self.mesh, &self.unfolding, walk.edge, side).ok_or_else(lost)?;
+                FaceLayout::new(self.mesh(), &self.unfolding, walk.edge, side).ok_or_else(lost)?;
             // The layout hangs the face below the edge's line: mirror the walk's points into it.
             let r = Planar {
                 x: walk.r.x.clone(),
@@ -459,7 +465,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                         layout.to_near(&s),
                     )
                 } else {
-                    let (ux, uy) = (layout.length.clone() - &cx, zero.clone() - &cy);
+                    let (ux, uy) = (layout.apex_far_x.clone(), zero.clone() - &cy);
                     let u = clamp(cross(r.x.clone() - &cx, r.y.clone() - &cy) / cross(ux, uy));
                     (layout.wing.far, layout.far_position(&u), layout.to_far(&s))
                 }
@@ -467,7 +473,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             // From a corner of the face the line leaves by the opposite side; from elsewhere,
             // by the side the apex is on.
             // A start at a vertex at the same place as a corner starts from that corner.
-            let [p0, p1] = self.mesh.edge(walk.edge).vertices;
+            let [p0, p1] = self.mesh().edge(walk.edge).vertices;
             let start = walk.start.map(|v| self.twins(v));
             let starts_at =
                 |p: VertexId| start.as_ref().is_some_and(|g| g.iter().any(|t| t.0 == p));
@@ -486,18 +492,18 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 simplices,
                 edge_point(next_edge, &position, self.unfolding.length(next_edge)),
             );
-            if self.mesh.side_count(next_edge) > 2 {
+            if self.mesh().side_count(next_edge) > 2 {
                 return Ok(WalkEnd::Edge {
                     edge: next_edge,
                     x: position,
                 });
             }
-            let e = self.mesh.edge(next_edge);
+            let e = self.mesh().edge(next_edge);
             let here = self
-                .mesh
+                .mesh()
                 .side_of(next_edge, walk.face)
                 .expect("face of the edge");
-            let next_face = e.faces[1 - here].ok_or_else(lost)?;
+            let next_face = e.faces[1 - here.index()].ok_or_else(lost)?;
             walk = Walk {
                 edge: next_edge,
                 face: next_face,
@@ -524,27 +530,27 @@ impl<S: Scalar> GeodesicField<'_, S> {
     fn closure_path(&self, face: FaceId, target: PseudoSource) -> Option<Vec<SurfacePoint>> {
         let point = match target {
             PseudoSource::Vertex(v) => SurfacePoint::Vertex(v),
-            PseudoSource::Source(k) => self.sources[k],
+            PseudoSource::Source(k) => self.sources[k.index()],
         };
-        let own = point.faces(self.mesh);
+        let own = point.faces(self.mesh());
         if own.contains(&face) {
             return Some(Vec::new());
         }
         // Only an edge of a degenerate face can hold another face's vertex inside it.
         let beside_degenerate = |g: EdgeId| {
-            self.mesh
+            self.mesh()
                 .edge_faces(g)
-                .any(|h| self.mesh.is_degenerate_face(h))
+                .any(|h| self.mesh().is_degenerate_face(h))
         };
         if !self
-            .mesh
+            .mesh()
             .face_edges(face)
             .into_iter()
             .any(beside_degenerate)
         {
             return None;
         }
-        let p = self.unfolding.position(self.mesh, &point);
+        let p = self.unfolding.position(self.mesh(), &point);
         // Breadth first over faces joined by edges that contain the point inside.
         let mut reached: Vec<(FaceId, Option<(usize, SurfacePoint)>)> = vec![(face, None)];
         let mut next = 0;
@@ -560,18 +566,18 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 points.reverse();
                 return Some(points);
             }
-            for g in self.mesh.face_edges(f) {
+            for g in self.mesh().face_edges(f) {
                 if !beside_degenerate(g) {
                     continue;
                 }
-                let Some(on) = self.unfolding.planar(self.mesh, g, &p) else {
+                let Some(on) = self.unfolding.planar(self.mesh(), g, &p) else {
                     continue;
                 };
                 if !self.unfolding.is_inside(g, &on) {
                     continue;
                 }
                 let here = edge_point(g, &on.x, self.unfolding.length(g));
-                for beyond in self.mesh.edge_faces(g) {
+                for beyond in self.mesh().edge_faces(g) {
                     if reached.iter().all(|(r, _)| *r != beyond) {
                         reached.push((beyond, Some((next, here))));
                     }

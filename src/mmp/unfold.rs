@@ -6,7 +6,8 @@
 //! point from an edge's frame into the frames of the face's two other edges.
 
 use super::source::SurfacePoint;
-use crate::mesh::{normalizing_power, EdgeId, TriMesh, VertexId, Wing};
+use super::wedge::{PseudoSource, Wedge};
+use crate::mesh::{normalizing_power, EdgeId, Side, TriMesh, VertexId, Wing};
 use crate::scalar::{Scalar, Sign};
 use std::cmp::Ordering;
 
@@ -26,6 +27,7 @@ pub struct Planar<S> {
 /// Coordinates are multiplied by the mesh's [`unit_scale`](TriMesh::unit_scale) (a power of
 /// two, exactly), so every length here is in scaled units; [`Unfolding::to_model`] and
 /// [`Unfolding::scaled_from_model`] convert distances to and from the model's units.
+#[derive(Clone, Debug)]
 pub(crate) struct Unfolding<S> {
     edge_length: Vec<S>,
     /// Whether the edge has length zero (its ends coincide): no wedge lives on it, and no
@@ -33,9 +35,8 @@ pub(crate) struct Unfolding<S> {
     zero_length: Vec<bool>,
     /// Whether a vertex ends an edge of length zero (has a twin at its place).
     has_twin: Vec<bool>,
-    /// `(x, h)` of the apex of the face on each side of each edge, `h >= 0`, at the side's
-    /// [`TriMesh::side_slot`].
-    apex: Vec<Option<(S, S)>>,
+    /// The apex of the face on each side of each edge, at the side's [`TriMesh::side_slot`].
+    apex: Vec<Option<Apex<S>>>,
     /// The mesh's unit scale.
     scale: f64,
 }
@@ -104,8 +105,45 @@ impl<S: Scalar> EdgeFrame<S> {
     }
 }
 
+/// The apex of a face in the frame of one of its edges. Both offsets along the edge are
+/// measured from their own end, and the height from the end nearer the apex: on a sliver
+/// whose far edge is a millionth of the edge at hand, `length - x` would lose the far edge's
+/// direction to cancellation, and rays unfolded across it would turn by as much, times their
+/// length.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Apex<S> {
+    /// Position along the edge, from its `vertices[0]`.
+    pub x: S,
+    /// Position along the edge, from its `vertices[1]` backwards (`length - x`).
+    pub far_x: S,
+    /// Distance from the edge's line, `h >= 0`.
+    pub h: S,
+}
+
+impl<S: Scalar> Apex<S> {
+    /// The apex `a` given the frames of its edge from each end (`frames[i]` starts at
+    /// `ends[i]`).
+    fn new(mesh: &TriMesh, frames: [&EdgeFrame<S>; 2], ends: [VertexId; 2], a: VertexId) -> Self {
+        let [v0, v1] = ends;
+        let p = vertex_point::<S>(mesh, a);
+        let (near, far) = (frames[0].planar(&p), frames[1].planar(&p));
+        // Which end is nearer is a choice of formula, not a decision: both heights are exact
+        // in exact arithmetic.
+        let span = |v: VertexId| {
+            let (q, r) = (mesh.position(v), mesh.position(a));
+            (0..3).fold(0.0f64, |m, i| m.max((q[i] - r[i]).abs()))
+        };
+        let h = if span(v0) <= span(v1) { near.y } else { far.y };
+        Apex {
+            x: near.x,
+            far_x: far.x,
+            h,
+        }
+    }
+}
+
 /// A vertex's position in scaled coordinates, in the backend's number type.
-fn vertex_point<S: Scalar>(mesh: &TriMesh, v: VertexId) -> [S; 3] {
+pub(crate) fn vertex_point<S: Scalar>(mesh: &TriMesh, v: VertexId) -> [S; 3] {
     let scale = S::from_f64(mesh.unit_scale());
     mesh.position(v).map(|c| S::from_f64(c) * &scale)
 }
@@ -127,12 +165,16 @@ impl<S: Scalar> Unfolding<S> {
             edge_length.push(frame.as_ref().map_or_else(S::zero, EdgeFrame::length));
             zero_length.push(frame.is_none());
             let e = EdgeId(i as u32);
-            for side in 0..mesh.side_count(e) {
-                apex[mesh.side_slot(e, side)] =
-                    frame.as_ref().zip(mesh.wing(e, side)).map(|(frame, wing)| {
-                        let p = frame.planar(&vertex_point(mesh, wing.apex));
-                        (p.x, p.y)
-                    });
+            let ends = mesh.edge(e).vertices;
+            let backwards = frame
+                .as_ref()
+                .and_then(|_| EdgeFrame::<S>::new(mesh, ends[1], ends[0]));
+            for side in mesh.sides(e) {
+                apex[mesh.side_slot(e, side)] = frame
+                    .as_ref()
+                    .zip(backwards.as_ref())
+                    .zip(mesh.wing(e, side))
+                    .map(|((f, b), wing)| Apex::new(mesh, [f, b], ends, wing.apex));
             }
         }
         Unfolding {
@@ -161,11 +203,20 @@ impl<S: Scalar> Unfolding<S> {
         self.has_twin[v.index()]
     }
 
-    /// `(x, h)` of the apex of the face on `side` of `e` (`None` without a face there, or on
-    /// an edge of length zero).
+    /// The apex of the face on `side` of `e` (`None` without a face there, or on an edge of
+    /// length zero).
     #[inline]
-    pub(crate) fn apex(&self, mesh: &TriMesh, e: EdgeId, side: usize) -> Option<&(S, S)> {
+    pub(crate) fn apex(&self, mesh: &TriMesh, e: EdgeId, side: Side) -> Option<&Apex<S>> {
         self.apex[mesh.side_slot(e, side)].as_ref()
+    }
+
+    /// The apex of the face on `side` of `e` as a point of the edge's frame, below the line
+    /// (`y = h`, the side a pseudo-source on the other side looks at).
+    pub(crate) fn apex_point(&self, mesh: &TriMesh, e: EdgeId, side: Side) -> Option<Planar<S>> {
+        self.apex(mesh, e, side).map(|a| Planar {
+            x: a.x.clone(),
+            y: a.h.clone(),
+        })
     }
 
     /// A point in space (scaled coordinates) in the frame of edge `e`; `None` for an edge of
@@ -205,6 +256,24 @@ impl<S: Scalar> Unfolding<S> {
         }
     }
 
+    /// A lower bound on a wedge's distance at the vertex `v`: its sigma plus the straight line
+    /// from its pseudo-source to `v` in space (see [`Scalar::at_least`]). `sources` are
+    /// the propagation's sources.
+    pub(crate) fn straight_bound(
+        &self,
+        mesh: &TriMesh,
+        w: &Wedge<S>,
+        v: VertexId,
+        sources: &[SurfacePoint],
+    ) -> S {
+        let from = match w.pseudo_source {
+            PseudoSource::Vertex(u) => vertex_point(mesh, u),
+            PseudoSource::Source(k) => self.position(mesh, &sources[k.index()]),
+        };
+        let d = sub(&vertex_point(mesh, v), &from);
+        w.sigma.clone() + &dot(&d, &d).sqrt()
+    }
+
     /// A distance in scaled units, in the model's units (exact: a power of two; `inf` past
     /// `f64::MAX`).
     #[inline]
@@ -227,6 +296,9 @@ pub(crate) struct FaceLayout<'a, S> {
     pub length: &'a S,
     /// Apex position along the edge.
     pub apex_x: &'a S,
+    /// Apex position along the edge from its `vertices[1]` backwards (`length - apex_x`, measured
+    /// from that end).
+    pub apex_far_x: &'a S,
     /// Apex depth below the edge's line.
     pub apex_h: &'a S,
     /// Length of the edge from the edge's `vertices[0]` to the apex.
@@ -246,15 +318,16 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         mesh: &'a TriMesh,
         unfolding: &'a Unfolding<S>,
         e: EdgeId,
-        side: usize,
+        side: Side,
     ) -> Option<Self> {
         let wing = mesh.wing(e, side)?;
-        let (apex_x, apex_h) = unfolding.apex(mesh, e, side)?;
+        let apex = unfolding.apex(mesh, e, side)?;
         Some(FaceLayout {
             wing,
             length: unfolding.length(e),
-            apex_x,
-            apex_h,
+            apex_x: &apex.x,
+            apex_far_x: &apex.far_x,
+            apex_h: &apex.h,
             near_length: unfolding.length(wing.near),
             far_length: unfolding.length(wing.far),
             near_reversed: mesh.edge(wing.near).vertices[0] == wing.apex,
@@ -286,7 +359,7 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         let dx = b.clone() - &s.x;
         let num =
             dx.clone() * &(s.y.clone() + self.apex_h) + s.y.clone() * &(s.x.clone() - self.apex_x);
-        let den = dx * self.apex_h + s.y.clone() * &(self.length.clone() - self.apex_x);
+        let den = dx * self.apex_h + s.y.clone() * self.apex_far_x;
         num / den
     }
 
@@ -343,7 +416,7 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
     #[inline]
     pub(crate) fn to_far(&self, s: &Planar<S>) -> Planar<S> {
         let b = self.far_length;
-        let ux = self.length.clone() - self.apex_x;
+        let ux = self.apex_far_x.clone();
         let sx = s.x.clone() - self.apex_x;
         let sy = s.y.clone() + self.apex_h;
         let x = (sx.clone() * &ux + sy.clone() * self.apex_h) / b;
@@ -398,7 +471,8 @@ mod tests {
         let e = mesh
             .edge_between(VertexId(0), VertexId(3))
             .expect("the diagonal");
-        let side = (0..2)
+        let side = mesh
+            .sides(e)
             .find(|&s| mesh.wing(e, s).is_some_and(|w| w.apex == VertexId(1)))
             .expect("the face with apex (1, 0)");
         let layout = FaceLayout::new(&mesh, &unfolding, e, side).expect("a face");
@@ -435,7 +509,7 @@ mod tests {
         assert!(unfolding.is_zero_length(e));
         assert!(unfolding.has_twin(VertexId(0)) && unfolding.has_twin(VertexId(2)));
         assert!(!unfolding.has_twin(VertexId(1)));
-        assert!(unfolding.apex(&mesh, e, 0).is_none());
+        assert!(unfolding.apex(&mesh, e, Side::FIRST).is_none());
         let p = [
             Real::from_f64(0.5),
             Real::from_f64(0.0),

@@ -1,46 +1,16 @@
 //! The wedge (Surazhsky's "window") of Definition 1 [LZT §2].
 
 use super::unfold::Planar;
-use crate::mesh::{EdgeId, VertexId};
+use crate::mesh::{EdgeId, Side, SourceId, VertexId};
 use crate::scalar::{Scalar, SourceDistance};
 use serde::Serialize;
-
-/// Which side of an edge a wedge's pseudo-source lies on (tau in Definition 1 [LZT §2]): the
-/// side of the face the wedge came through, so that it goes on into the face (or, on an edge
-/// shared by more than two faces, the faces) on the other sides.
-///
-/// Sides are numbered as [`TriMesh::wing`](crate::TriMesh::wing) numbers them: `FIRST` and
-/// `SECOND` are the edge's [`faces`](crate::mesh::Edge::faces)`[0]` and `[1]`, and an edge shared
-/// by more than two faces has a side per face. A wedge lying along its edge (pseudo-source on
-/// the edge's line) is on the `FIRST` side by convention.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
-pub struct Side(u32);
-
-impl Side {
-    /// The side of the edge's first face.
-    pub const FIRST: Side = Side(0);
-    /// The side of the edge's second face.
-    pub const SECOND: Side = Side(1);
-
-    /// The side's number: 0 for `FIRST`, 1 for `SECOND`, and so on.
-    #[inline]
-    pub fn index(self) -> usize {
-        self.0 as usize
-    }
-
-    /// The side with the given number.
-    #[inline]
-    pub fn from_index(i: usize) -> Side {
-        Side(i as u32)
-    }
-}
 
 /// Where a wedge's geodesics come from: a source itself, or a mesh vertex that acts as a
 /// pseudo-source (a saddle or boundary vertex \[MMP87\]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
 pub enum PseudoSource {
     /// The source with this index in the list passed to the propagation.
-    Source(usize),
+    Source(SourceId),
     /// A mesh vertex.
     Vertex(VertexId),
 }
@@ -70,7 +40,7 @@ pub struct Wedge<S> {
     /// The pseudo-source.
     pub pseudo_source: PseudoSource,
     /// Index of the source the wedge's geodesics lead back to.
-    pub source: usize,
+    pub source: SourceId,
 }
 
 impl<S: Scalar> Wedge<S> {

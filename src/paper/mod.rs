@@ -1,5 +1,8 @@
 //! Reproductions of the examples of [LZT §3]: data and text for the runnable examples in
 //! `paper-examples/` and for the tests. Nothing here prints; the examples do.
+//!
+//! Unstable: this module serves the reproductions and may change with them; it is not part of
+//! the library's API for distances and paths.
 
 pub mod examples;
 pub mod strip;

@@ -67,7 +67,7 @@ impl fmt::Display for EdgeRows {
 pub fn pseudo_source_name<S: Scalar>(field: &GeodesicField<'_, S>, w: &Wedge<S>) -> String {
     match w.pseudo_source {
         PseudoSource::Vertex(v) => format!("v{}", v.0),
-        PseudoSource::Source(k) => match field.sources()[k] {
+        PseudoSource::Source(k) => match field.sources()[k.index()] {
             SurfacePoint::Vertex(v) => format!("v{}", v.0),
             _ => format!("source{k}"),
         },
@@ -89,7 +89,7 @@ pub fn edge_rows<S: Scalar>(
         .iter()
         .map(|w| {
             let on_line = w.source_y.to_f64() == 0.0;
-            let source_face = field.mesh().wing(e, w.tau.index()).map(|wing| wing.face);
+            let source_face = field.mesh().wing(e, w.tau).map(|wing| wing.face);
             let tau = match face {
                 Some(f) => (!on_line && source_face != Some(f)).to_string(),
                 None if on_line => "line".to_string(),

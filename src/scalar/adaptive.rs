@@ -191,6 +191,11 @@ impl Scalar for Adaptive {
     super::keeps_no_values!();
 
     #[inline(always)]
+    fn at_least(value: Adaptive, bound: impl FnOnce() -> Adaptive) -> Adaptive {
+        Adaptive(value.0.max(bound().0))
+    }
+
+    #[inline(always)]
     fn sign(&self) -> Sign {
         sign_of(self.0)
     }

@@ -59,6 +59,11 @@ impl Scalar for f64 {
     }
 
     #[inline(always)]
+    fn at_least(value: f64, bound: impl FnOnce() -> f64) -> f64 {
+        value.max(bound())
+    }
+
+    #[inline(always)]
     fn sign(&self) -> Sign {
         if *self > 0.0 {
             Sign::Positive

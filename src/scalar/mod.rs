@@ -219,6 +219,18 @@ pub trait Scalar: Field {
     /// when `r` lies to the left of the line from `p` to `q`.
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign;
 
+    /// `value`, raised to `bound` where it lies below it. The engine passes a wedge's distance at
+    /// a vertex, constructed through a chain of unfoldings, with a lower bound computed from
+    /// the inputs alone: the pseudo-source's sigma plus the straight line in space, which no
+    /// geodesic beats and which it equals in the pseudo-source's own faces. A rounded number type
+    /// repairs there the rounding that put the constructed value below (on a needle of 1e-12
+    /// beside unit edges, that rounding is 1e-4 of the distance). The default, right for exact
+    /// number types, returns `value` without evaluating `bound`.
+    #[inline(always)]
+    fn at_least(value: Self, _bound: impl FnOnce() -> Self) -> Self {
+        value
+    }
+
     /// Starts a propagation on this thread: a backend with a precision cap takes
     /// `precision_cap` as this thread's (if given), and resets what belongs to one run.
     #[inline(always)]

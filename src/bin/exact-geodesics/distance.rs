@@ -3,7 +3,7 @@
 use crate::{certified_digits, emit, with_backend, Backend, Common, Digits};
 use clap::{Args, ValueEnum};
 use exact_geodesics::scalar::Real;
-use exact_geodesics::{GeodesicField, Scalar, VertexId};
+use exact_geodesics::{GeodesicField, Scalar, SourceId, VertexId};
 use std::fmt::Write;
 use std::path::PathBuf;
 
@@ -42,7 +42,7 @@ pub fn run(args: &DistanceArgs) -> Result<(), String> {
     emit(args.out.as_ref(), &render(rows, args.format))
 }
 
-type Row = (u32, Distance, Option<usize>);
+type Row = (u32, Distance, Option<SourceId>);
 
 fn float_rows<S: Scalar>(field: &GeodesicField<'_, S>) -> Vec<Row> {
     (0..field.mesh().vertex_count() as u32)
@@ -73,7 +73,7 @@ fn render(rows: Vec<Row>, format: DistanceFormat) -> String {
             let mut out = String::with_capacity(32 * rows.len());
             out.push_str("vertex,distance,source\n");
             for (v, d, s) in rows {
-                let s = s.map(|s| s.to_string()).unwrap_or_default();
+                let s = s.map(|s| s.0.to_string()).unwrap_or_default();
                 match d {
                     Distance::Float(d) => writeln!(out, "{v},{},{s}", Shortest(d)),
                     Distance::Digits(d) => writeln!(out, "{v},{d},{s}"),

@@ -94,7 +94,7 @@ fn render(path: &GeodesicPath, digits: Option<String>, format: PathFormat) -> St
                 out,
                 "# geodesic path, length {}, from target to source {}",
                 path.length(),
-                path.source
+                path.source.0
             )
             .expect("String");
             if let Some(digits) = digits {

@@ -4,8 +4,10 @@
 //! +z for planar ones), manifold, and free of zero-area faces.
 
 mod spec;
+mod uv_sphere;
 
 pub use spec::{parse_shape, ShapeError, MAX_GENERATED_FACES, SHAPE_NAMES};
+pub use uv_sphere::uv_sphere;
 
 use super::TriMesh;
 use glam::DVec3;
@@ -489,6 +491,9 @@ mod tests {
             (octahedron(), 6, 8),
             (icosahedron(), 12, 20),
             (icosphere(2), 162, 320),
+            // The smallest UV sphere is a bipyramid over a triangle; 32 x 21 matches icosphere(3).
+            (uv_sphere(3, 2), 5, 6),
+            (uv_sphere(32, 21), 642, 1280),
             (paper_example1(), 8, 12),
             (paper_example3(), 9, 14),
             (paper_example4(), 14, 24),
@@ -507,6 +512,7 @@ mod tests {
             cube(),
             octahedron(),
             icosphere(1),
+            uv_sphere(8, 5),
             paper_example1(),
             paper_example3(),
         ] {

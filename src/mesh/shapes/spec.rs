@@ -3,7 +3,7 @@
 
 use super::{
     cube, grid, icosahedron, icosphere, l_shape, octahedron, paper_example1, paper_example3,
-    paper_example4, random_convex_triangulation, square_with_hole, tetrahedron,
+    paper_example4, random_convex_triangulation, square_with_hole, tetrahedron, uv_sphere,
 };
 use crate::mesh::TriMesh;
 use std::ops::RangeInclusive;
@@ -16,6 +16,7 @@ pub const SHAPE_NAMES: &[&str] = &[
     "octahedron",
     "icosahedron",
     "icosphere:K",
+    "uv-sphere:SLICES,STACKS",
     "grid:NX,NY",
     "l-shape:N",
     "square-with-hole:N",
@@ -86,7 +87,8 @@ fn largest_square_size(per_n2: u64) -> u64 {
 ///
 /// Sizes are limited so that a typo cannot ask for billions of faces: every mesh has at most
 /// [`MAX_GENERATED_FACES`] faces, and each argument has a range (`icosphere:K` with `K` in
-/// `0..=8`, `grid:NX,NY` with `2 NX NY` faces, `l-shape:N` with `6 N^2`, `square-with-hole:N`
+/// `0..=8`, `uv-sphere:SLICES,STACKS` with 3 or more slices, 2 or more stacks and
+/// `2 SLICES (STACKS - 1)` faces, `grid:NX,NY` with `2 NX NY` faces, `l-shape:N` with `6 N^2`, `square-with-hole:N`
 /// with `16 N^2`, `convex:SEED,BOUNDARY,INTERIOR` with 3 to 10,000 boundary corners and at most
 /// 10,000 interior points). Nothing is clamped: a value out of range is an error.
 ///
@@ -159,6 +161,12 @@ pub fn parse_shape(spec: &str) -> Result<TriMesh, ShapeError> {
         "octahedron" => octahedron(),
         "icosahedron" => icosahedron(),
         "icosphere" => icosphere(arg(0, 0..=8)? as u32),
+        "uv-sphere" => {
+            let most = MAX_GENERATED_FACES / 2;
+            let (slices, stacks) = (arg(0, 3..=most)?, arg(1, 2..=most + 1)?);
+            faces(2 * slices * (stacks - 1))?;
+            uv_sphere(slices as usize, stacks as usize)
+        }
         "grid" => {
             let most = MAX_GENERATED_FACES / 2;
             let (nx, ny) = (arg(0, 1..=most)?, arg(1, 1..=most)?);
@@ -187,6 +195,9 @@ mod tests {
     fn shapes_parse_by_name() {
         assert_eq!(parse_shape("icosphere:1").map(|m| m.vertex_count()), Ok(42));
         assert_eq!(parse_shape("grid:2,3").map(|m| m.face_count()), Ok(12));
+        assert_eq!(parse_shape("uv-sphere:4,3").map(|m| m.face_count()), Ok(16));
+        assert!(parse_shape("uv-sphere:2,3").is_err());
+        assert!(parse_shape("uv-sphere:3,1").is_err());
         assert!(parse_shape("grid:0,3").is_err());
         assert!(parse_shape("icosphere:99").is_err());
         assert!(parse_shape("sphere").is_err());
