@@ -1,6 +1,8 @@
 //! The command line: its output contract and its errors (non-zero exit, a message naming the
 //! file and line, never a panic).
 
+// The command line is built with the `cli` feature only.
+#![cfg(feature = "cli")]
 mod common;
 
 use common::cli::{fails_with, run, stdout, temp_file};

@@ -2,6 +2,8 @@
 //! a message naming the file and line, or the value, and exit code 1 (2 for a malformed command
 //! line); never a panic (101), a hang or a silently changed input.
 
+// The command line is built with the `cli` feature only.
+#![cfg(feature = "cli")]
 mod common;
 
 use common::cli::{refuses, run, stdout, temp_file};

@@ -1,6 +1,8 @@
 //! The `benchmark-model` and `verify` commands [LZT §5]: a model written to a directory and
 //! checked by the engine, a user's scene file, and the failures they report.
 
+// The command line is built with the `cli` feature only.
+#![cfg(feature = "cli")]
 mod common;
 
 use common::cli::{fails_with, refuses, run, stdout};

@@ -3,6 +3,7 @@
 
 mod common;
 
+#[cfg(feature = "cli")]
 use common::cli::{fails_with, run, stdout, temp_file};
 use exact_geodesics::mesh::shapes;
 use exact_geodesics::scalar::Real;
@@ -69,6 +70,7 @@ const FOLD: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 7.006492321624085e-46\nv 2 
                     f 1 2 4\nf 1 4 3\nf 2 5 6\nf 2 6 4\n";
 
 #[test]
+#[cfg(feature = "cli")]
 fn uncertified_decisions_are_warned_of_and_refused_on_demand() {
     let file = temp_file("fold.obj", FOLD);
     let path = file.to_str().expect("a UTF-8 path");
@@ -126,9 +128,11 @@ fn each_run_has_its_own_precision_cap_and_counters() {
 
 /// `sqrt 5`, the distance across two faces of the unit cube to the opposite corner, to 60
 /// significant digits (correctly rounded by Python's `decimal` at 80 digits).
+#[cfg(feature = "cli")]
 const ROOT_5: &str = "2.23606797749978969640917366873127623544061835961152572427090";
 
 #[test]
+#[cfg(feature = "cli")]
 fn distances_print_with_certified_digits() {
     let csv = stdout(&run(&[
         "distance",

@@ -4,6 +4,7 @@
 
 mod common;
 
+#[cfg(feature = "cli")]
 use common::cli::{fails_with, run, stdout};
 use exact_geodesics::experiments::{
     count_wedges_in, fit_resolution, measure_in, min_angle_summary, normalize_to_unit_cube,
@@ -13,6 +14,7 @@ use exact_geodesics::experiments::{
 use exact_geodesics::mesh::shapes;
 use exact_geodesics::scalar::Backend;
 use exact_geodesics::{propagate, PropagateOptions, SurfacePoint, TriMesh, VertexId};
+#[cfg(feature = "cli")]
 use std::path::{Path, PathBuf};
 
 const ALL_BACKENDS: [Backend; 3] = [Backend::F64, Backend::Adaptive, Backend::Exact];
@@ -21,6 +23,7 @@ fn close(a: f64, b: f64) -> bool {
     (a - b).abs() <= 1e-12 * b.abs().max(1.0)
 }
 
+#[cfg(feature = "cli")]
 fn out_dir(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!(
         "exact-geodesics-experiments-{}-{name}",
@@ -30,6 +33,7 @@ fn out_dir(name: &str) -> PathBuf {
     dir
 }
 
+#[cfg(feature = "cli")]
 /// The records of a CSV file without quoting (model names here have no commas).
 fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
     let text = std::fs::read_to_string(path).expect("the table was written");
@@ -39,6 +43,7 @@ fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
     (split(header), lines.map(split).collect())
 }
 
+#[cfg(feature = "cli")]
 fn column(header: &[String], name: &str) -> usize {
     header
         .iter()
@@ -305,6 +310,7 @@ fn observation3_refinement_keeps_the_surface() {
     ));
 }
 
+#[cfg(feature = "cli")]
 const TABLE1_COLUMNS: [&str; 9] = [
     "model",
     "backend",
@@ -316,6 +322,7 @@ const TABLE1_COLUMNS: [&str; 9] = [
     "wedges_max",
     "seconds",
 ];
+#[cfg(feature = "cli")]
 const TABLE2_COLUMNS: [&str; 8] = [
     "model",
     "backend",
@@ -328,6 +335,7 @@ const TABLE2_COLUMNS: [&str; 8] = [
 ];
 
 #[test]
+#[cfg(feature = "cli")]
 fn cli_table1_writes_csv_and_json_with_one_row_per_model_backend_and_source() {
     let dir = out_dir("t1");
     let d = dir.to_str().expect("UTF-8 path");
@@ -377,6 +385,7 @@ fn cli_table1_writes_csv_and_json_with_one_row_per_model_backend_and_source() {
 }
 
 #[test]
+#[cfg(feature = "cli")]
 fn cli_table2_ratio_is_mean_wedges_over_mean_length() {
     let dir = out_dir("t2");
     let d = dir.to_str().expect("UTF-8 path");
@@ -411,6 +420,7 @@ fn cli_table2_ratio_is_mean_wedges_over_mean_length() {
 }
 
 #[test]
+#[cfg(feature = "cli")]
 fn cli_table1_agrees_with_stats_and_wedges_for_the_same_model_source_and_backend() {
     // Both models lie in the unit cube already, so normalization leaves them unchanged. The
     // cube has 19 wedges from a corner; the flat grid has up to 3 on an edge, in adaptive.
@@ -488,6 +498,7 @@ fn cli_table1_agrees_with_stats_and_wedges_for_the_same_model_source_and_backend
     }
 }
 
+#[cfg(feature = "cli")]
 const SCALE_COLUMNS: [&str; 6] = [
     "model",
     "backend",
@@ -496,6 +507,7 @@ const SCALE_COLUMNS: [&str; 6] = [
     "wedges_mean",
     "distance_max_difference",
 ];
+#[cfg(feature = "cli")]
 const RESOLUTION_COLUMNS: [&str; 6] = [
     "series",
     "model",
@@ -506,6 +518,7 @@ const RESOLUTION_COLUMNS: [&str; 6] = [
 ];
 
 #[test]
+#[cfg(feature = "cli")]
 fn cli_observation3_writes_the_scale_and_resolution_series_and_the_fits() {
     let dir = out_dir("o3");
     let d = dir.to_str().expect("UTF-8 path");
@@ -580,6 +593,7 @@ fn cli_observation3_writes_the_scale_and_resolution_series_and_the_fits() {
 }
 
 #[test]
+#[cfg(feature = "cli")]
 fn cli_observation3_runs_only_the_series_asked_for() {
     let dir = out_dir("o3-grid");
     stdout(&run(&[
@@ -603,6 +617,7 @@ fn cli_observation3_runs_only_the_series_asked_for() {
 }
 
 #[test]
+#[cfg(feature = "cli")]
 fn cli_errors_name_the_file_and_exit_non_zero() {
     let dir = out_dir("err");
     fails_with(
@@ -618,6 +633,7 @@ fn cli_errors_name_the_file_and_exit_non_zero() {
 }
 
 /// The shared Table 1 models, when this machine has them.
+#[cfg(feature = "cli")]
 fn paper_table1_model(name: &str) -> Option<PathBuf> {
     let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../shared/models/paper-table1")
@@ -631,6 +647,7 @@ fn paper_table1_model(name: &str) -> Option<PathBuf> {
 }
 
 #[test]
+#[cfg(feature = "cli")]
 fn paper_table1_sphere_uniform_edge_lengths_match_its_readme() {
     // README of ../shared/models/paper-table1: mean / std / min / max = 0.0620 / 0.0073 /
     // 0.0440 / 0.0847, computed there by other code (Python) on the same file.

@@ -395,6 +395,7 @@ fn subdivisions_cover_faces_and_are_star_shaped() {
 }
 
 #[test]
+#[cfg(feature = "cli")]
 fn subdivision_command_writes_an_svg() {
     let dir = std::env::temp_dir().join(format!("paper-examples-{}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");

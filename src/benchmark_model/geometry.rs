@@ -1,6 +1,7 @@
 //! Exact planar predicates (Shewchuk's adaptive orientation test) and the few f64 constructions
 //! the benchmark model needs.
 
+use glam::DVec2;
 use robust::{orient2d, Coord};
 use std::cmp::Ordering;
 
@@ -80,30 +81,29 @@ pub(crate) fn locate(polygon: &[Point], x: Point) -> Location {
 
 /// Euclidean distance.
 pub(crate) fn distance(a: Point, b: Point) -> f64 {
-    (a[0] - b[0]).hypot(a[1] - b[1])
+    let d = DVec2::from(a) - DVec2::from(b);
+    d.x.hypot(d.y)
 }
 
 /// Distance from `x` to the closed segment `ab`.
 pub(crate) fn distance_to_segment(a: Point, b: Point, x: Point) -> f64 {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let len2 = d[0] * d[0] + d[1] * d[1];
+    let (a, b, x) = (DVec2::from(a), DVec2::from(b), DVec2::from(x));
+    let d = b - a;
+    let len2 = d.length_squared();
     let t = if len2 > 0.0 {
-        (((x[0] - a[0]) * d[0] + (x[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
+        ((x - a).dot(d) / len2).clamp(0.0, 1.0)
     } else {
         0.0
     };
-    distance([a[0] + t * d[0], a[1] + t * d[1]], x)
+    distance((a + d * t).to_array(), x.to_array())
 }
 
 /// The smallest axis-parallel box holding the polygon: lower left, upper right.
 pub(crate) fn bounding_box(polygon: &[Point]) -> [Point; 2] {
-    polygon.iter().fold(
-        [[f64::INFINITY; 2], [f64::NEG_INFINITY; 2]],
-        |[lo, hi], x| {
-            [
-                [lo[0].min(x[0]), lo[1].min(x[1])],
-                [hi[0].max(x[0]), hi[1].max(x[1])],
-            ]
-        },
-    )
+    let (lo, hi) = polygon
+        .iter()
+        .fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), &x| {
+            (lo.min(x.into()), hi.max(x.into()))
+        });
+    [lo.to_array(), hi.to_array()]
 }

@@ -3,8 +3,9 @@
 //! minimal angle separates uniform from non-uniform models better (its minimum and mean).
 
 use super::Summary;
-use crate::mesh::vector::{angle, sub};
+use crate::mesh::vector::angle;
 use crate::{FaceId, TriMesh};
+use glam::DVec3;
 
 /// The smallest interior angle of every face, in degrees, in face order.
 ///
@@ -22,13 +23,13 @@ use crate::{FaceId, TriMesh};
 pub fn min_angles_degrees(mesh: &TriMesh) -> Vec<f64> {
     (0..mesh.face_count())
         .map(|f| {
-            let corners = mesh.face(FaceId(f as u32)).map(|v| mesh.position(v));
+            let corners = mesh
+                .face(FaceId(f as u32))
+                .map(|v| DVec3::from(mesh.position(v)));
             (0..3)
                 .map(|i| {
                     let o = corners[i];
-                    let a = sub(corners[(i + 1) % 3], o);
-                    let b = sub(corners[(i + 2) % 3], o);
-                    angle(a, b).to_degrees()
+                    angle(corners[(i + 1) % 3] - o, corners[(i + 2) % 3] - o).to_degrees()
                 })
                 .fold(f64::INFINITY, f64::min)
         })

@@ -5,8 +5,9 @@
 //! earlier one is a copy of it: it shares that face's edges but is none of their faces.
 
 use super::validation::{DuplicateFace, NonManifoldEdge};
-use super::vector::{angle, cross, length, normalizing_power, sub, unit, TWO_TO_64};
+use super::vector::{angle, length, normalizing_power, unit, TWO_TO_64};
 use super::{EdgeId, FaceId, ValidationReport, VertexId};
+use glam::DVec3;
 use std::collections::HashMap;
 
 /// An undirected edge: its two end vertices (`vertices[0] < vertices[1]`) and its first two
@@ -106,17 +107,17 @@ fn unit_scale(positions: &[[f64; 3]]) -> f64 {
 /// Whether a triangle (in unit-scaled coordinates) is degenerate for the f64 geometry: its
 /// corners collinear to within rounding, or two of them coincident. The sine of its largest
 /// angle is then below a few ulps, and an unfolding computed in f64 across it means little.
-fn is_degenerate(p: [[f64; 3]; 3]) -> bool {
+fn is_degenerate(p: [DVec3; 3]) -> bool {
     /// Sines of the face's largest angle below this count as degenerate: well above the
     /// rounding of a cross product of unit vectors (a few ulps), far below any angle a
     /// modelled face has.
     const SINE: f64 = 64.0 * f64::EPSILON;
-    let sides = [sub(p[1], p[0]), sub(p[2], p[1]), sub(p[0], p[2])];
+    let sides = [p[1] - p[0], p[2] - p[1], p[0] - p[2]];
     // The largest angle is the one between the two shortest sides.
     let mut order = [0, 1, 2];
     order.sort_by(|&i, &j| length(sides[i]).total_cmp(&length(sides[j])));
     match (unit(sides[order[0]]), unit(sides[order[1]])) {
-        (Some(u), Some(w)) => length(cross(u, w)) <= SINE,
+        (Some(u), Some(w)) => length(u.cross(w)) <= SINE,
         _ => true,
     }
 }
@@ -235,13 +236,11 @@ impl Topology {
         // Geometry in coordinates scaled by a power of two (exact), so that squared lengths
         // neither overflow nor underflow whatever the model's units.
         let unit_scale = unit_scale(positions);
-        let scaled = |v: usize| positions[v].map(|c| c * unit_scale);
+        let scaled = |v: usize| DVec3::from(positions[v]) * unit_scale;
         let mut edge_length = Vec::with_capacity(edges.len());
         for (ei, e) in edges.iter().enumerate() {
-            let scaled_length = length(sub(
-                scaled(e.vertices[1].index()),
-                scaled(e.vertices[0].index()),
-            ));
+            let scaled_length =
+                length(scaled(e.vertices[1].index()) - scaled(e.vertices[0].index()));
             if scaled_length > 0.0 && scaled_length < FLOAT_RESOLUTION {
                 report.float_unresolved_edges.push(EdgeId(ei as u32));
             }
@@ -333,9 +332,7 @@ impl Topology {
                 }
             }
             for i in 0..3 {
-                let u = sub(p[(i + 1) % 3], p[i]);
-                let w = sub(p[(i + 2) % 3], p[i]);
-                angle_sum[f[i] as usize] += angle(u, w);
+                angle_sum[f[i] as usize] += angle(p[(i + 1) % 3] - p[i], p[(i + 2) % 3] - p[i]);
             }
         }
 

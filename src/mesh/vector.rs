@@ -1,19 +1,7 @@
-//! Small `f64` vector helpers for the mesh's own geometry (lengths, angles, degeneracy),
-//! computed without overflow or underflow whatever the model's units.
+//! `f64` vector helpers for the mesh's own geometry (lengths, angles, degeneracy) on
+//! `glam::DVec3`, computed without overflow or underflow whatever the model's units.
 
-pub(crate) fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-pub(crate) fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-pub(crate) fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
+use glam::DVec3;
 
 /// The power of two `p` with `m p` in `[1, 2)` for a positive finite `m`, kept within
 /// `2^-1022 ..= 2^1022` (so that it and its inverse are normal numbers).
@@ -44,39 +32,37 @@ fn squares_safely(m: f64) -> bool {
 
 /// `v` scaled to unit length, computed without overflow or underflow; `None` for the zero
 /// vector.
-pub(crate) fn unit(v: [f64; 3]) -> Option<[f64; 3]> {
-    let largest = v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+pub(crate) fn unit(v: DVec3) -> Option<DVec3> {
+    let largest = v.abs().max_element();
     if largest == 0.0 {
         return None;
     }
     let v = if squares_safely(largest) {
         v
     } else {
-        v.map(|c| c * normalizing_power(largest))
+        v * normalizing_power(largest)
     };
-    let norm = dot(v, v).sqrt();
-    Some(v.map(|c| c / norm))
+    Some(v / v.length())
 }
 
 /// The length of `v`, without overflow or underflow in its square.
-pub(crate) fn length(v: [f64; 3]) -> f64 {
-    let largest = v.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+pub(crate) fn length(v: DVec3) -> f64 {
+    let largest = v.abs().max_element();
     if largest == 0.0 {
         return 0.0;
     }
     if squares_safely(largest) {
-        return dot(v, v).sqrt();
+        return v.length();
     }
     let power = normalizing_power(largest);
-    let v = v.map(|c| c * power);
-    dot(v, v).sqrt() / power
+    (v * power).length() / power
 }
 
 /// The angle between two vectors (0 if either is zero), computed on unit vectors so that it
 /// does not depend on their magnitudes.
-pub(crate) fn angle(u: [f64; 3], w: [f64; 3]) -> f64 {
+pub(crate) fn angle(u: DVec3, w: DVec3) -> f64 {
     match (unit(u), unit(w)) {
-        (Some(u), Some(w)) => length(cross(u, w)).atan2(dot(u, w)),
+        (Some(u), Some(w)) => length(u.cross(w)).atan2(u.dot(w)),
         _ => 0.0,
     }
 }

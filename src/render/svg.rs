@@ -3,6 +3,7 @@
 //! named.
 
 use crate::subdivision::{FaceSubdivision, Point2};
+use glam::DVec2;
 use std::fmt::Write;
 
 /// Width and height of the drawing in pixels.
@@ -20,18 +21,17 @@ fn colour(i: usize, n: usize) -> String {
 /// The centroid of a polygon's area (its first vertex if degenerate).
 fn centroid(polygon: &[Point2]) -> Point2 {
     let n = polygon.len();
-    let (mut a, mut cx, mut cy) = (0.0, 0.0, 0.0);
+    let (mut a, mut moment) = (0.0, DVec2::ZERO);
     for i in 0..n {
-        let (p, q) = (polygon[i], polygon[(i + 1) % n]);
-        let c = p[0] * q[1] - q[0] * p[1];
+        let (p, q) = (DVec2::from(polygon[i]), DVec2::from(polygon[(i + 1) % n]));
+        let c = p.perp_dot(q);
         a += c;
-        cx += (p[0] + q[0]) * c;
-        cy += (p[1] + q[1]) * c;
+        moment += (p + q) * c;
     }
     if a.abs() < 1e-300 {
         polygon[0]
     } else {
-        [cx / (3.0 * a), cy / (3.0 * a)]
+        (moment / (3.0 * a)).to_array()
     }
 }
 

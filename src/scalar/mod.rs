@@ -48,6 +48,7 @@ pub(crate) use keeps_no_values;
 mod adaptive;
 mod audit;
 mod backend;
+mod bignum;
 mod bisector;
 mod double_double;
 mod error_bound;

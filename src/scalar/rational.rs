@@ -7,9 +7,9 @@
 //! the numbers to grow much. Reducing by gcds, as a canonical rational does after every
 //! operation, would cost more than the rest of the arithmetic.
 
+use super::bignum::{f64_parts, Float, Integer, Rational, Round};
 use super::roots::CertifiedSign;
 use super::{Ring, Sign};
-use rug::Integer;
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -24,7 +24,7 @@ pub(crate) struct Q {
 impl Q {
     fn zero() -> Q {
         Q {
-            n: Integer::new(),
+            n: Integer::default(),
             e: 0,
             d: Integer::from(1),
         }
@@ -41,15 +41,11 @@ impl Q {
     /// The nearest `f64` (for reports and positions; exactness is in the sign), through an
     /// exact rational, so that no scaling overflows or underflows on the way.
     pub(crate) fn to_f64(&self) -> f64 {
-        let mut r = rug::Rational::from((&self.n, &self.d));
-        let shift = self.e.unsigned_abs().min(u32::MAX as u64) as u32;
-        if self.e >= 0 {
-            r <<= shift;
-        } else {
-            r >>= shift;
-        }
+        let r = Rational::new(self.n.clone(), self.d.clone())
+            .expect("a positive denominator")
+            .times_pow2(self.e);
         // Rounded to nearest (a rational's own conversion truncates).
-        rug::Float::with_val(53, &r).to_f64()
+        Float::from_rational(&r, 53, Round::Nearest).to_f64(Round::Nearest)
     }
 
     /// `self + o`, or `self - o` if `negate`.
@@ -62,23 +58,27 @@ impl Q {
         }
         // Over the common denominator, and with the smaller exponent: only the operand with
         // the larger exponent is shifted, into one allocation of the right size.
-        let (mut n, right, d) = if self.d == 1 && o.d == 1 {
-            (self.n, Integer::new(), self.d)
+        let (mut n, right, d) = if self.d.is_one() && o.d.is_one() {
+            (self.n, Integer::default(), self.d)
         } else {
-            let right = Integer::from(&o.n * &self.d);
+            let right = o.n.times(&self.d);
             (self.n * &o.d, right, self.d * &o.d)
         };
-        let right = if o.d == 1 && d == 1 { &o.n } else { &right };
+        let right = if o.d.is_one() && d.is_one() {
+            &o.n
+        } else {
+            &right
+        };
         let e = self.e.min(o.e);
         if self.e > e {
-            n = Integer::from(&n << (self.e - e) as u32);
+            n = n.shifted_left((self.e - e) as u64);
         }
         if o.e > e {
-            let shifted = Integer::from(right << (o.e - e) as u32);
+            let shifted = right.shifted_left((o.e - e) as u64);
             if negate {
-                n -= shifted;
+                n -= &shifted;
             } else {
-                n += shifted;
+                n += &shifted;
             }
         } else if negate {
             n -= right;
@@ -124,7 +124,7 @@ impl<'a> Sub<&'a Q> for Q {
 impl<'a> Mul<&'a Q> for Q {
     type Output = Q;
     fn mul(self, o: &'a Q) -> Q {
-        let d = if o.d == 1 { self.d } else { self.d * &o.d };
+        let d = if o.d.is_one() { self.d } else { self.d * &o.d };
         Q::normalized(self.n * &o.n, self.e + o.e, d)
     }
 }
@@ -137,9 +137,9 @@ impl<'a> Div<&'a Q> for Q {
         if o.n.is_zero() {
             return Q::zero();
         }
-        let mut n = if o.d == 1 { self.n } else { self.n * &o.d };
+        let mut n = if o.d.is_one() { self.n } else { self.n * &o.d };
         let mut d = self.d * &o.n;
-        if d < 0 {
+        if d.cmp0().is_lt() {
             n = -n;
             d = -d;
         }
@@ -160,18 +160,10 @@ impl Ring for Q {
         if !x.is_finite() || x == 0.0 {
             return Q::zero();
         }
-        // x = mantissa 2^exponent exactly, the mantissa an integer below 2^53.
-        let bits = x.to_bits();
-        let exponent = ((bits >> 52) & 0x7ff) as i64;
-        let fraction = bits & ((1u64 << 52) - 1);
-        let (mantissa, e) = if exponent == 0 {
-            (fraction, -1074)
-        } else {
-            (fraction | (1u64 << 52), exponent - 1075)
-        };
-        let n = Integer::from(mantissa);
+        let (negative, mantissa, e) = f64_parts(x);
+        let n = Integer::from(mantissa as i64);
         Q {
-            n: if x < 0.0 { -n } else { n },
+            n: if negative { -n } else { n },
             e,
             d: Integer::from(1),
         }
@@ -191,16 +183,11 @@ impl CertifiedSign for Q {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rug::Rational;
 
     fn exact(q: &Q) -> Rational {
-        let mut r = Rational::from((q.n.clone(), q.d.clone()));
-        if q.e >= 0 {
-            r <<= q.e as u32;
-        } else {
-            r >>= (-q.e) as u32;
-        }
-        r
+        Rational::new(q.n.clone(), q.d.clone())
+            .expect("a positive denominator")
+            .times_pow2(q.e)
     }
 
     #[test]

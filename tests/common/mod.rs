@@ -2,6 +2,7 @@
 //! and the mesh's accessors only.
 #![allow(dead_code)] // Each test binary uses a different part of this module.
 
+#[cfg(feature = "cli")]
 pub mod cli;
 pub mod strategies;
 

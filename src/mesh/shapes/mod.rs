@@ -10,6 +10,7 @@ pub use spec::{parse_shape, ShapeError, MAX_GENERATED_FACES, SHAPE_NAMES};
 pub use uv_sphere::uv_sphere;
 
 use super::TriMesh;
+use glam::DVec3;
 
 /// A small deterministic generator (SplitMix64), so that generated meshes depend on the seed
 /// only, on every platform.
@@ -139,7 +140,8 @@ pub fn random_convex_triangulation(seed: u64, boundary: usize, interior: usize) 
         .collect();
     let mut faces: Vec<[u32; 3]> = (1..boundary as u32 - 1).map(|k| [0, k, k + 1]).collect();
     let area2 = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| {
-        (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+        let a = DVec3::from(a).truncate();
+        (DVec3::from(b).truncate() - a).perp_dot(DVec3::from(c).truncate() - a)
     };
     let mut placed = 0;
     let mut attempts = 0;
@@ -292,15 +294,13 @@ pub fn icosahedron() -> TriMesh {
 /// on the unit sphere: `10 * 4^k + 2` vertices.
 pub fn icosphere(subdivisions: u32) -> TriMesh {
     let (positions, mut faces) = icosahedron_data();
-    let normalise = |p: [f64; 3]| {
-        let r = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
-        [p[0] / r, p[1] / r, p[2] / r]
-    };
-    let mut positions: Vec<[f64; 3]> = positions.into_iter().map(normalise).collect();
+    let normalise = |p: DVec3| p / p.length();
+    let mut positions: Vec<[f64; 3]> = positions
+        .into_iter()
+        .map(|p| normalise(DVec3::from(p)).to_array())
+        .collect();
     for _ in 0..subdivisions {
-        faces = split_in_four(&mut positions, &faces, |p, q| {
-            normalise([p[0] + q[0], p[1] + q[1], p[2] + q[2]])
-        });
+        faces = split_in_four(&mut positions, &faces, |p, q| normalise(p + q));
     }
     build(positions, faces)
 }
@@ -317,9 +317,7 @@ pub fn icosphere(subdivisions: u32) -> TriMesh {
 /// ```
 pub fn subdivide(mesh: &TriMesh) -> TriMesh {
     let mut positions = mesh.positions().to_vec();
-    let faces = split_in_four(&mut positions, mesh.faces(), |p, q| {
-        std::array::from_fn(|k| 0.5 * p[k] + 0.5 * q[k])
-    });
+    let faces = split_in_four(&mut positions, mesh.faces(), |p, q| 0.5 * p + 0.5 * q);
     build(positions, faces)
 }
 
@@ -328,12 +326,13 @@ pub fn subdivide(mesh: &TriMesh) -> TriMesh {
 fn split_in_four(
     positions: &mut Vec<[f64; 3]>,
     faces: &[[u32; 3]],
-    between: impl Fn([f64; 3], [f64; 3]) -> [f64; 3],
+    between: impl Fn(DVec3, DVec3) -> DVec3,
 ) -> Vec<[u32; 3]> {
     let mut midpoint = std::collections::HashMap::new();
     let mut mid = |a: u32, b: u32, positions: &mut Vec<[f64; 3]>| {
         *midpoint.entry((a.min(b), a.max(b))).or_insert_with(|| {
-            positions.push(between(positions[a as usize], positions[b as usize]));
+            let (p, q) = (positions[a as usize], positions[b as usize]);
+            positions.push(between(p.into(), q.into()).to_array());
             (positions.len() - 1) as u32
         })
     };

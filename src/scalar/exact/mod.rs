@@ -4,8 +4,9 @@
 //! A [`Real`] is a node of an expression DAG over rational leaves (an `f64` input converts
 //! exactly). Its sign is decided in stages, each counted ([`DecisionCounts`]):
 //! 1. the `f64` interval computed when the node was built (the filter);
-//! 2. without square roots below it, exact rational evaluation; with them, MPFR intervals at
-//!    doubling precision until the enclosure excludes zero;
+//! 2. without square roots below it, exact rational evaluation; with them, intervals of
+//!    binary floats rounded outwards (MPFR, or pure Rust without the feature `gmp`: see
+//!    `scalar::bignum`) at doubling precision until the enclosure excludes zero;
 //! 3. a zero is certified by structure (`x - x` of two copies of one expression), by exact
 //!    rational evaluation, by a zero normal form in a tower of quadratic extensions, or when
 //!    the enclosure is smaller than the BFMSS separation bound \[BFMSS01\] (a non-zero value
@@ -26,17 +27,19 @@
 //! \[BFMSS01\] Burnikel, Funke, Mehlhorn, Schirra, Schmitt, *A separation bound for real
 //! algebraic expressions*, ESA 2001.
 
+mod decimal;
 mod node;
 mod normal_form;
 mod refine;
 
 pub use super::audit::{Certificate, Uncertainty, ZeroProof};
+pub use super::bignum::{Integer, Rational};
 
 use super::audit::{self, DecisionCounts, Site};
+use super::bignum::{Float, Round};
 use super::roots::{self, CertifiedSign};
 use super::{BisectorRoots, Field, Interval, Ring, Scalar, Sign, SourceDistance};
 use node::{DivisorCheck, Node, Op};
-use rug::{Float, Rational};
 use std::cell::Cell;
 use std::cmp::Ordering;
 use std::fmt;
@@ -54,7 +57,7 @@ const FIRST_PRECISION: u32 = 128;
 pub const MIN_PRECISION_CAP: u32 = FIRST_PRECISION;
 
 /// The largest precision cap, in bits. Refinement doubles the precision up to the cap and keeps
-/// an enclosure of two MPFR numbers on every node of the expression, so at `2^20` bits a hard
+/// an enclosure of two big floats on every node of the expression, so at `2^20` bits a hard
 /// decision already costs 256 KiB per node; a larger cap would exhaust memory before it helped.
 pub const MAX_PRECISION_CAP: u32 = 1 << 20;
 
@@ -203,7 +206,6 @@ impl Real {
     /// assert_eq!((root2.clone() * &root2 - Real::from_integer(2)).to_decimal(5).as_deref(), Some("0"));
     /// ```
     pub fn to_decimal(&self, digits: u32) -> Option<String> {
-        use rug::ops::Pow;
         let digits = digits.max(1);
         match self.certified_sign() {
             (_, Certificate::Uncertified(_)) => return None,
@@ -215,14 +217,10 @@ impl Real {
         let cap = precision_cap().max(precision);
         loop {
             let (lo, hi) = refine::enclosure(&self.0, precision);
-            let mid = Float::with_val(precision, &lo + &hi) / 2u32;
-            let width = Float::with_val(precision, &hi - &lo);
-            // One unit in the last of `digits` digits is at least |mid| 10^(1 - digits) / 10
-            // (the leading digit is at most 9.99...); the width must be a tenth of it.
-            let unit = Float::with_val(precision, mid.abs_ref())
-                * Float::with_val(precision, 10u32).pow(-i64::from(digits));
-            if width * 10u32 <= unit {
-                return Some(mid.to_string_radix(10, Some(digits as usize)));
+            if let (Some(lo), Some(hi)) = (lo.to_rational(), hi.to_rational()) {
+                if let Some(text) = decimal::rounded_midpoint(&lo, &hi, digits) {
+                    return Some(text);
+                }
             }
             if precision >= cap {
                 return None;
@@ -255,10 +253,7 @@ impl Real {
             return [f.lo, f.hi];
         }
         let (lo, hi) = refine::enclosure(&self.0, FIRST_PRECISION);
-        [
-            lo.to_f64_round(rug::float::Round::Down),
-            hi.to_f64_round(rug::float::Round::Up),
-        ]
+        [lo.to_f64(Round::Down), hi.to_f64(Round::Up)]
     }
 
     /// The sign, counted as a decision of the current run.
@@ -314,9 +309,7 @@ fn check_divisors(node: &Arc<Node>) -> Result<(), Uncertainty> {
 
 /// Whether `|x| <= 2^-bits`.
 fn below(x: &Float, bits: u32) -> bool {
-    x.is_zero()
-        || x.get_exp()
-            .is_some_and(|e| i64::from(e) <= -i64::from(bits))
+    x.is_zero() || x.top_exponent().is_some_and(|e| e <= -i64::from(bits))
 }
 
 impl fmt::Debug for Real {
@@ -385,7 +378,9 @@ impl Field for Real {
         if straddles && normal_form::normal_form(&self.0).is_some_and(|nf| nf.is_zero()) {
             return 0.0;
         }
-        (Float::with_val(FIRST_PRECISION, &lo + &hi) / 2u32).to_f64()
+        let sum = Float::add(&lo, &hi, FIRST_PRECISION, Round::Nearest);
+        let two = Float::from_rational(&Rational::from(2), FIRST_PRECISION, Round::Nearest);
+        Float::div(&sum, &two, FIRST_PRECISION, Round::Nearest).to_f64(Round::Nearest)
     }
 
     fn sqrt(&self) -> Self {
@@ -498,7 +493,6 @@ impl Scalar for Real {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rug::Integer;
 
     fn int(i: i64) -> Real {
         Real::from_integer(i)
@@ -566,8 +560,7 @@ mod tests {
 
     /// `sqrt(10^70 + 1) - 10^35`, about 5e-36: non-zero, but its `f64` filter contains zero.
     fn tiny() -> Real {
-        let e35 = Integer::from(Integer::u_pow_u(10, 35));
-        let e35 = Real::from_rational(Rational::from(e35));
+        let e35 = Real::from_rational(Rational::from(Integer::from(10).pow(35)));
         (e35.clone() * &e35 + int(1)).sqrt() - &e35
     }
 

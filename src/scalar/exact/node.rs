@@ -14,16 +14,16 @@
 //! square root of a perfect-square rational is rational, so meshes with rational lengths build
 //! no DAG at all.
 
+use super::super::bignum::{Float, Rational};
 use super::super::{Interval, Sign};
 use super::normal_form::NormalForm;
-use rug::{Integer, Rational};
 use std::collections::HashSet;
 use std::hash::{Hash, Hasher};
 use std::sync::{Arc, Mutex, OnceLock};
 
 /// Rational leaves larger than this (numerator plus denominator bits) are not folded further:
 /// the DAG and its interval evaluation are cheaper than ever-growing rationals.
-const FOLD_BITS: u32 = 2048;
+const FOLD_BITS: u64 = 2048;
 
 /// An operation of the DAG.
 pub(crate) enum Op {
@@ -41,8 +41,8 @@ pub(crate) enum Op {
 /// An enclosure of a node's value at some precision, cached for refinement.
 pub(crate) struct Enclosure {
     pub(crate) precision: u32,
-    pub(crate) lo: rug::Float,
-    pub(crate) hi: rug::Float,
+    pub(crate) lo: Float,
+    pub(crate) hi: Float,
 }
 
 /// A node of the DAG.
@@ -100,11 +100,12 @@ fn log_add(a: f64, b: f64) -> f64 {
     }
 }
 
-fn log2_bound(i: &Integer) -> f64 {
-    if *i == 0 {
+/// `log2` bound of an integer of `bits` bits.
+fn log2_bound(bits: u64) -> f64 {
+    if bits == 0 {
         f64::NEG_INFINITY
     } else {
-        f64::from(i.significant_bits())
+        bits as f64
     }
 }
 
@@ -135,8 +136,8 @@ impl Node {
             hash: hasher.finish(),
             structural_zero: false,
             filter: enclose(&r),
-            log_u: log2_bound(r.numer()),
-            log_l: log2_bound(r.denom()),
+            log_u: log2_bound(r.numer_bits()),
+            log_l: log2_bound(r.denom_bits()),
             has_sqrt: false,
             divisors_unchecked: false,
             divisors_checked: OnceLock::new(),
@@ -194,9 +195,9 @@ impl Node {
             let has_sqrt = op_children(&op).any(|c| c.has_sqrt);
             Node::operation(op, Interval::point(0.0), f64::NEG_INFINITY, 0.0, has_sqrt)
         } else if op_children(&op).all(|c| c.rational().is_some()) {
-            return Node::leaf(Rational::new());
+            return Node::leaf(Rational::default());
         } else {
-            Node::leaf_node(Rational::new())
+            Node::leaf_node(Rational::default())
         };
         zero.structural_zero = true;
         Arc::new(zero)
@@ -209,8 +210,7 @@ impl Node {
         f: impl FnOnce(&Rational, &Rational) -> Option<Rational>,
     ) -> Option<Arc<Node>> {
         let (x, y) = (a.rational()?, b.rational()?);
-        let size = |r: &Rational| r.numer().significant_bits() + r.denom().significant_bits();
-        if size(x) + size(y) > FOLD_BITS {
+        if x.size_bits() + y.size_bits() > FOLD_BITS {
             return None;
         }
         f(x, y).map(Node::leaf)
@@ -221,11 +221,11 @@ impl Node {
     }
 
     fn is_one(&self) -> bool {
-        self.rational().is_some_and(|r| *r == 1)
+        self.rational().is_some_and(Rational::is_one)
     }
 
     pub(crate) fn add(a: Arc<Node>, b: Arc<Node>) -> Arc<Node> {
-        if let Some(n) = Node::fold(&a, &b, |x, y| Some(Rational::from(x + y))) {
+        if let Some(n) = Node::fold(&a, &b, |x, y| Some(x.clone() + y)) {
             return n;
         }
         if b.is_zero() {
@@ -243,7 +243,7 @@ impl Node {
     }
 
     pub(crate) fn sub(a: Arc<Node>, b: Arc<Node>) -> Arc<Node> {
-        if let Some(n) = Node::fold(&a, &b, |x, y| Some(Rational::from(x - y))) {
+        if let Some(n) = Node::fold(&a, &b, |x, y| Some(x.clone() - y)) {
             return n;
         }
         if same_expression(&a, &b) {
@@ -261,7 +261,7 @@ impl Node {
     }
 
     pub(crate) fn mul(a: Arc<Node>, b: Arc<Node>) -> Arc<Node> {
-        if let Some(n) = Node::fold(&a, &b, |x, y| Some(Rational::from(x * y))) {
+        if let Some(n) = Node::fold(&a, &b, |x, y| Some(x.clone() * y)) {
             return n;
         }
         if a.is_zero() || b.is_zero() {
@@ -281,7 +281,7 @@ impl Node {
     }
 
     pub(crate) fn div(a: Arc<Node>, b: Arc<Node>) -> Arc<Node> {
-        let quotient = |x: &Rational, y: &Rational| (!y.is_zero()).then(|| Rational::from(x / y));
+        let quotient = |x: &Rational, y: &Rational| (!y.is_zero()).then(|| x.clone() / y);
         if let Some(n) = Node::fold(&a, &b, quotient) {
             return n;
         }
@@ -295,7 +295,7 @@ impl Node {
 
     pub(crate) fn neg(a: Arc<Node>) -> Arc<Node> {
         if let Some(r) = a.rational() {
-            return Node::leaf(Rational::from(-r));
+            return Node::leaf(-r.clone());
         }
         let (log_u, log_l, filter, has_sqrt) = (a.log_u, a.log_l, -a.filter, a.has_sqrt);
         Node::build(Op::Neg(a), filter, log_u, log_l, has_sqrt)
@@ -306,11 +306,12 @@ impl Node {
     pub(crate) fn sqrt(a: Arc<Node>) -> Arc<Node> {
         if let Some(r) = a.rational() {
             if r.cmp0().is_le() {
-                return Node::leaf(Rational::new());
+                return Node::leaf(Rational::default());
             }
-            if r.numer().is_perfect_square() && r.denom().is_perfect_square() {
-                let (n, d) = (r.numer().clone().sqrt(), r.denom().clone().sqrt());
-                return Node::leaf(Rational::from((n, d)));
+            let (n, d) = (r.numer(), r.denom());
+            if n.is_perfect_square() && d.is_perfect_square() {
+                let root = Rational::new(n.sqrt(), d.sqrt()).expect("a positive denominator");
+                return Node::leaf(root);
             }
         }
         let (log_u, log_l) = (0.5 * a.log_u, 0.5 * a.log_l);

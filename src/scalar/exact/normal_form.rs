@@ -13,8 +13,8 @@
 //! zero normal form proves the value zero; a non-zero one proves nothing, and the refinement
 //! with the separation bound takes over. Normal forms that grow past [`MAX_TERMS`] give up.
 
+use super::super::bignum::{Integer, Rational};
 use super::node::{Node, Op};
-use rug::{Integer, Rational};
 use std::cell::RefCell;
 use std::collections::{BTreeMap, HashMap};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -28,7 +28,7 @@ const MAX_PRODUCT_WORK: usize = 2048;
 
 /// Normal forms with a coefficient larger than this (numerator plus denominator bits) are
 /// abandoned: rational arithmetic on them costs more than the separation bound would.
-const MAX_COEFFICIENT_BITS: u32 = 16384;
+const MAX_COEFFICIENT_BITS: u64 = 16384;
 
 /// Term-by-term multiplications one zero test may spend, over all the nodes it normalises;
 /// a test that runs out leaves the zero to the separation bound.
@@ -108,16 +108,14 @@ impl NormalForm {
     /// The value, if it is rational.
     pub(crate) fn as_rational(&self) -> Option<Rational> {
         match self.0.len() {
-            0 => Some(Rational::new()),
+            0 => Some(Rational::default()),
             1 => self.0.get(&Vec::new()).cloned(),
             _ => None,
         }
     }
 
     fn checked(self) -> Option<NormalForm> {
-        let small = |c: &Rational| {
-            c.numer().significant_bits() + c.denom().significant_bits() <= MAX_COEFFICIENT_BITS
-        };
+        let small = |c: &Rational| c.size_bits() <= MAX_COEFFICIENT_BITS;
         (self.0.len() <= MAX_TERMS && self.0.values().all(small)).then_some(self)
     }
 
@@ -146,7 +144,7 @@ impl NormalForm {
         NormalForm(
             self.0
                 .iter()
-                .map(|(m, c)| (m.clone(), Rational::from(-c)))
+                .map(|(m, c)| (m.clone(), -c.clone()))
                 .collect(),
         )
     }
@@ -185,7 +183,7 @@ impl NormalForm {
                         (None, None) => unreachable!("loop condition"),
                     }
                 }
-                let mut term = NormalForm::monomial(Rational::from(c1 * c2), product);
+                let mut term = NormalForm::monomial(c1.clone() * c2, product);
                 for s in common {
                     term = term.mul(&square_of(s))?;
                 }
@@ -209,7 +207,7 @@ impl NormalForm {
                     .iter()
                     .map(|(m, c)| {
                         let c = if m.contains(&s) {
-                            Rational::from(-c)
+                            -c.clone()
                         } else {
                             c.clone()
                         };
@@ -256,18 +254,18 @@ fn sqrt_of_rational(r: &Rational) -> NormalForm {
     if r.cmp0().is_le() {
         return NormalForm::default();
     }
-    let mut m = Integer::from(r.numer() * r.denom());
+    let mut m = r.numer() * r.denom();
     let mut f = Integer::from(1);
-    for p in [2u32, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47] {
+    for p in [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47] {
         let p2 = Integer::from(p * p);
         while m.is_divisible(&p2) {
-            m /= &p2;
-            f *= p;
+            m = m.div_exact(&p2);
+            f = f * Integer::from(p);
         }
     }
+    let over_denominator = |f: Integer| Rational::new(f, r.denom()).expect("a denominator");
     if m.is_perfect_square() {
-        f *= m.sqrt();
-        return NormalForm::rational(Rational::from((f, r.denom().clone())));
+        return NormalForm::rational(over_denominator(f * m.sqrt()));
     }
     let id = TOWER.with(|t| {
         let mut t = t.borrow_mut();
@@ -282,7 +280,7 @@ fn sqrt_of_rational(r: &Rational) -> NormalForm {
             }
         }
     });
-    NormalForm::monomial(Rational::from((f, r.denom().clone())), vec![id])
+    NormalForm::monomial(over_denominator(f), vec![id])
 }
 
 /// The normal form of a node's value, memoized on the node; `None` if it grew too large or
