@@ -12,6 +12,7 @@ mod provenance;
 mod query;
 mod source;
 mod stats;
+mod stop;
 mod trace_back;
 mod unfold;
 mod wedge;

@@ -7,6 +7,7 @@ use super::intersect::Scratch;
 use super::provenance::{Anchor, Provenance};
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
+use super::stop::StopPoints;
 use super::unfold::{FaceLayout, Planar, Unfolding};
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{EdgeId, FaceId, Side, SourceId, TriMesh, VertexId};
@@ -34,12 +35,31 @@ pub struct PropagateOptions {
     /// [`DEFAULT_PRECISION_CAP`](crate::scalar::exact::DEFAULT_PRECISION_CAP)). Other backends
     /// ignore it.
     pub precision_cap: Option<u32>,
+    /// Stop as soon as the distance of every one of these points is final (`stop_points` in
+    /// geometry-central and Kirsanov's MMP). Then the distances of the stop points, and of every
+    /// vertex no farther than the farthest of them, are those of the full run: for vertices
+    /// the very same values, since the run is the full run's first events, in the same order;
+    /// for points in faces or on edges the same up to the rounding of the query. Other
+    /// vertices hold an upper bound (the length of some path, not necessarily the shortest) or
+    /// `f64::INFINITY`, and [`Stats::stopped_at_stop_points`] says that the run stopped early.
+    /// A point is final once the front of the propagation (the smallest distance waiting in
+    /// its queue) exceeds `d(c) + |p - c|` for a corner `c` of the simplex holding the point,
+    /// as decided by the backend; the front is the queue's key, the `f64` value of a distance.
+    /// A stop point that cannot be reached lets the run go on to its end. Empty: no early stop.
+    pub stop_points: Vec<SurfacePoint>,
 }
 
 impl PropagateOptions {
     /// Stops the propagation at the given distance.
     pub fn with_max_distance(mut self, d: f64) -> Self {
         self.max_distance = Some(d);
+        self
+    }
+
+    /// Stops the propagation once the distances of these points are final (see
+    /// [`stop_points`](Self::stop_points)).
+    pub fn with_stop_points(mut self, points: impl IntoIterator<Item = SurfacePoint>) -> Self {
+        self.stop_points = points.into_iter().collect();
         self
     }
 
@@ -71,13 +91,13 @@ pub struct Progress {
 
 /// Computes the geodesic distance field from `sources` by propagating wedges.
 ///
-/// Every source is validated first ([`SurfacePoint::validated`]). The result answers distance,
+/// Every source and stop point is validated first ([`SurfacePoint::validated`]). The result answers distance,
 /// nearest-source and back-trace queries; points that cannot be reached (another component, a
 /// vertex no face uses, beyond `max_distance`) are at distance `f64::INFINITY`.
 ///
 /// # Errors
-/// [`PointError`] if there is no source, a source is not a point of the mesh, or the maximum
-/// distance is negative or NaN.
+/// [`PointError`] if there is no source, a source or stop point is not a point of the mesh, or
+/// the maximum distance is negative or NaN.
 ///
 /// # Example
 /// ```
@@ -165,10 +185,15 @@ pub fn propagate_with_progress<'m, S: Scalar>(
         .iter()
         .map(|p| p.validated(mesh))
         .collect::<Result<Vec<_>, _>>()?;
+    let stop_points = options
+        .stop_points
+        .iter()
+        .map(|p| p.validated(mesh))
+        .collect::<Result<Vec<_>, _>>()?;
     let started = Instant::now();
     S::begin_run(options.precision_cap);
     S::take_counts();
-    let mut engine = Engine::new(mesh, options, sources);
+    let mut engine = Engine::new(mesh, options, sources, &stop_points);
     for k in 0..engine.sources.len() {
         let point = engine.sources[k];
         engine.emit_source(SourceId(k as u32), &point);
@@ -250,6 +275,7 @@ pub(crate) struct Engine<'m, S: Scalar> {
     pending_emission: Vec<bool>,
     queue: BinaryHeap<Event>,
     max_distance: f64,
+    stop: Option<StopPoints<S>>,
     pub(crate) record_decisions: bool,
     reached: usize,
     pub(crate) stats: Stats,
@@ -257,8 +283,14 @@ pub(crate) struct Engine<'m, S: Scalar> {
 }
 
 impl<'m, S: Scalar> Engine<'m, S> {
-    fn new(mesh: &'m TriMesh, options: &PropagateOptions, sources: Vec<SurfacePoint>) -> Self {
+    fn new(
+        mesh: &'m TriMesh,
+        options: &PropagateOptions,
+        sources: Vec<SurfacePoint>,
+        stop_points: &[SurfacePoint],
+    ) -> Self {
         let unfolding = Unfolding::new(mesh);
+        let stop = StopPoints::new(mesh, &unfolding, stop_points);
         let max_distance = options
             .max_distance
             .map_or(f64::INFINITY, |d| unfolding.scaled_from_model(d));
@@ -274,6 +306,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             pending_emission: vec![false; mesh.vertex_count()],
             queue: BinaryHeap::new(),
             max_distance,
+            stop,
             record_decisions: options.record_decisions,
             reached: 0,
             stats: Stats::default(),
@@ -285,6 +318,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let mut events = 0u64;
         while let Some(event) = self.queue.pop() {
             if event.key > self.max_distance {
+                break;
+            }
+            if self.stops_here(event.key) {
+                self.stats.stopped_at_stop_points = true;
                 break;
             }
             events += 1;
@@ -327,6 +364,18 @@ impl<'m, S: Scalar> Engine<'m, S> {
             vertex_count: self.mesh.vertex_count(),
             front: self.unfolding.to_model(self.max_distance.min(f64::MAX)),
         });
+    }
+
+    /// Whether every stop point is final with the front at `key`.
+    fn stops_here(&mut self, key: f64) -> bool {
+        let vertices = &self.vertices;
+        self.stop.as_mut().is_some_and(|stop| {
+            stop.all_final(key, |v| {
+                vertices[v.index()]
+                    .as_ref()
+                    .map(|d| (&d.distance, d.approx))
+            })
+        })
     }
 
     fn finish(self) -> GeodesicField<'m, S> {

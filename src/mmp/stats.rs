@@ -47,6 +47,9 @@ pub struct Stats {
     pub peak_queue: usize,
     /// Largest number of bytes held by wedge storage (wedges and per-edge lists).
     pub peak_wedge_bytes: usize,
+    /// Whether the run stopped early because every stop point was final
+    /// ([`PropagateOptions::stop_points`](super::PropagateOptions::stop_points)).
+    pub stopped_at_stop_points: bool,
     /// Wall-clock seconds spent propagating.
     pub propagation_seconds: f64,
     /// How the backend settled its decisions (empty for `f64`, which does not certify).

@@ -1,0 +1,164 @@
+//! Early stop at target points: the stop points' distances equal those of the full run (and
+//! the known answers), with fewer events.
+
+mod common;
+
+use exact_geodesics::mesh::shapes::{self, SplitMix64};
+use exact_geodesics::scalar::{Adaptive, Real};
+use exact_geodesics::{
+    propagate, FaceId, GeodesicField, PointError, PropagateOptions, Scalar, SurfacePoint, TriMesh,
+    VertexId,
+};
+
+fn vertex(v: u32) -> SurfacePoint {
+    SurfacePoint::Vertex(VertexId(v))
+}
+
+fn run<'m, S: Scalar>(
+    mesh: &'m TriMesh,
+    source: u32,
+    stops: &[SurfacePoint],
+) -> GeodesicField<'m, S> {
+    let options = PropagateOptions::default().with_stop_points(stops.iter().copied());
+    propagate::<S>(mesh, &[vertex(source)], &options).expect("valid source and stop points")
+}
+
+/// The stopped run against the full one: the same distance at every stop point (vertices bit
+/// for bit, other points to rounding) and at every vertex no farther than the farthest stop
+/// point, with fewer wedges propagated.
+fn stopped_run_agrees<S: Scalar>(mesh: &TriMesh, source: u32, stops: &[SurfacePoint]) {
+    let full = run::<S>(mesh, source, &[]);
+    let stopped = run::<S>(mesh, source, stops);
+    assert!(stopped.stats().stopped_at_stop_points);
+    assert!(!full.stats().stopped_at_stop_points);
+    let mut radius = 0.0f64;
+    for p in stops {
+        let (want, got) = (
+            full.distance_at(p).unwrap(),
+            stopped.distance_at(p).unwrap(),
+        );
+        match p {
+            SurfacePoint::Vertex(_) => assert_eq!(got.to_bits(), want.to_bits(), "at {p:?}"),
+            _ => assert!(
+                (got - want).abs() <= 1e-12 * want.max(1.0),
+                "at {p:?}: {got} {want}"
+            ),
+        }
+        radius = radius.max(want);
+    }
+    let mut inside = 0;
+    for v in (0..mesh.vertex_count() as u32).map(VertexId) {
+        let want = full.vertex_distance(v);
+        if want <= radius {
+            inside += 1;
+            assert_eq!(
+                stopped.vertex_distance(v).to_bits(),
+                want.to_bits(),
+                "at {v:?}"
+            );
+            assert_eq!(stopped.nearest_source(v), full.nearest_source(v));
+        } else {
+            assert!(
+                stopped.vertex_distance(v) >= want,
+                "an upper bound at {v:?}"
+            );
+        }
+    }
+    assert!(
+        inside < mesh.vertex_count(),
+        "the stop points are not the farthest"
+    );
+    let (events, all) = (
+        stopped.stats().wedges_propagated,
+        full.stats().wedges_propagated,
+    );
+    assert!(
+        events < all,
+        "{events} wedges propagated, {all} in the full run"
+    );
+}
+
+#[test]
+fn grid_stop_vertices_get_their_straight_distances() {
+    let mesh = shapes::grid(20, 20, 1.0, 1.0);
+    // Column i, row j is vertex 21 j + i; the source is the corner v0.
+    let stops = [vertex(21 * 3 + 5), vertex(21 * 7 + 2), vertex(21 * 6 + 6)];
+    for backend_run in [stopped_run_agrees::<f64>, stopped_run_agrees::<Adaptive>] {
+        backend_run(&mesh, 0, &stops);
+    }
+    let stopped = run::<f64>(&mesh, 0, &stops);
+    for p in &stops {
+        let SurfacePoint::Vertex(v) = *p else {
+            unreachable!()
+        };
+        let want = common::planar_straight_distance(&mesh, 0, v.index());
+        assert!((stopped.vertex_distance(v) - want).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn icosphere_stop_points_in_faces_and_on_edges_are_final() {
+    let mesh = shapes::icosphere(3);
+    let mut rng = SplitMix64::new(13);
+    let mut stops: Vec<SurfacePoint> = (0..12)
+        .map(|_| common::random_face_point(&mesh, &mut rng))
+        .collect();
+    stops.push(vertex(40));
+    let [a, b] = mesh.edges()[7].vertices;
+    stops.push(SurfacePoint::on_edge(&mesh, a.0, b.0, 0.3).unwrap());
+    // Keep the points near the source, so that stopping early saves something.
+    let full = run::<f64>(&mesh, 0, &[]);
+    stops.retain(|p| full.distance_at(p).unwrap() < 1.5);
+    assert!(stops.len() >= 4, "{stops:?}");
+    stopped_run_agrees::<f64>(&mesh, 0, &stops);
+    stopped_run_agrees::<Adaptive>(&mesh, 0, &stops);
+    for p in &stops {
+        stopped_run_agrees::<f64>(&mesh, 0, std::slice::from_ref(p));
+    }
+}
+
+#[test]
+fn exact_stop_at_a_cube_corner_is_certified() {
+    let cube = shapes::cube();
+    stopped_run_agrees::<Real>(&cube, 0, &[vertex(1)]);
+    let stopped = run::<Real>(&cube, 0, &[vertex(1)]);
+    assert!(stopped.is_certified());
+    let d = stopped.vertex_distance_exact(VertexId(1)).unwrap();
+    assert_eq!(d.to_decimal(20).as_deref(), Some("1.0000000000000000000"));
+}
+
+#[test]
+fn unreachable_stop_point_lets_the_run_finish() {
+    // Two disjoint triangles: vertex 4 cannot be reached from vertex 0.
+    let mesh = TriMesh::new(
+        vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [5.0, 0.0, 0.0],
+            [6.0, 0.0, 0.0],
+            [5.0, 1.0, 0.0],
+        ],
+        vec![[0, 1, 2], [3, 4, 5]],
+    )
+    .unwrap();
+    let full = run::<f64>(&mesh, 0, &[]);
+    let stopped = run::<f64>(&mesh, 0, &[vertex(1), vertex(4)]);
+    assert!(!stopped.stats().stopped_at_stop_points);
+    assert_eq!(stopped.vertex_distances(), full.vertex_distances());
+    assert_eq!(stopped.vertex_distance(VertexId(4)), f64::INFINITY);
+}
+
+#[test]
+fn stop_point_outside_the_mesh_is_an_error() {
+    let cube = shapes::cube();
+    let options = PropagateOptions::default().with_stop_points([SurfacePoint::Face {
+        face: FaceId(99),
+        bary: [1.0, 0.0, 0.0],
+    }]);
+    let result = propagate::<f64>(&cube, &[vertex(0)], &options);
+    assert!(matches!(
+        result.err(),
+        Some(PointError::FaceOutOfRange { face: 99, .. })
+    ));
+}
