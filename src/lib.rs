@@ -33,6 +33,7 @@
 pub mod benchmark_model;
 pub mod degeneracy;
 pub mod experiments;
+pub mod matrix;
 pub mod mesh;
 pub mod mmp;
 pub mod paper;
