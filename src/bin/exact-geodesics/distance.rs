@@ -106,7 +106,7 @@ fn render(rows: Vec<Row>, format: DistanceFormat) -> String {
 
 /// An `f64` in its shortest round-trip form: plain decimals in everyday magnitudes, exponent
 /// notation beyond them (`1e-150`, not 150 zeros).
-struct Shortest(f64);
+pub struct Shortest(pub f64);
 
 impl std::fmt::Display for Shortest {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {

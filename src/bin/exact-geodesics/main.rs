@@ -8,6 +8,8 @@ mod degeneracy;
 mod distance;
 mod experiment;
 mod load;
+mod matrix;
+mod matrix_files;
 mod path;
 mod progress;
 mod spec;
@@ -42,6 +44,9 @@ enum Command {
     Distance(distance::DistanceArgs),
     /// The shortest path from a target back to its nearest source.
     Path(path::PathArgs),
+    /// Geodesic distances among selected vertices (one propagation per source, stopped once
+    /// every selected vertex is final, sources in parallel): .npy, .mtx or .csv.
+    Matrix(matrix::MatrixArgs),
     /// The final wedges on an edge, on a face's edges, or on every edge, as 7-tuples
     /// (b0, b1, d0, d1, tau, s, sigma) [LZT Example 4].
     Wedges(wedges::WedgesArgs),
@@ -274,6 +279,7 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Distance(args) => distance::run(args),
         Command::Path(args) => path::run(args),
+        Command::Matrix(args) => matrix::run(args),
         Command::Wedges(args) => wedges::run(args),
         Command::Stats(args) => stats::run(args),
         Command::Compare(args) => compare::run(args),

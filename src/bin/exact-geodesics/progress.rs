@@ -31,6 +31,14 @@ pub fn bar(vertex_count: usize) -> ProgressBar {
     )
 }
 
+/// A bar over the rows of a distance matrix.
+pub fn row_bar(rows: usize) -> ProgressBar {
+    hidden_unless_terminal(
+        rows as u64,
+        "{elapsed_precise} [{bar:40}] {pos}/{len} rows, {per_sec}, {eta} left",
+    )
+}
+
 /// A bar over the vertices reached, headed by `label` (the model, backend and source).
 pub fn labelled_bar(vertex_count: usize, label: String) -> ProgressBar {
     let bar = hidden_unless_terminal(
