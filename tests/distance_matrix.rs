@@ -2,12 +2,13 @@
 //! symmetrization; radius-limited rows; errors.
 
 use exact_geodesics::matrix::{
-    distance_matrix, DenseMatrix, MatrixError, MatrixOptions, MatrixRow, SparseMatrix,
+    distance_matrix, DenseMatrix, MatrixError, MatrixOptions, MatrixRow, ShapeError, SparseMatrix,
 };
 use exact_geodesics::mesh::shapes::{self, SplitMix64};
 use exact_geodesics::scalar::{Adaptive, Real};
 use exact_geodesics::{
-    geodesic_distances, PointError, PropagateOptions, Scalar, SurfacePoint, TriMesh, VertexId,
+    geodesic_distances, EdgeId, FaceId, PointError, PropagateOptions, Scalar, SurfacePoint,
+    TriMesh, VertexId,
 };
 use std::convert::Infallible;
 
@@ -38,10 +39,17 @@ fn random_vertices(mesh: &TriMesh, count: usize, seed: u64) -> Vec<VertexId> {
     chosen
 }
 
+fn points(vertices: &[VertexId]) -> Vec<SurfacePoint> {
+    vertices.iter().map(|&v| SurfacePoint::Vertex(v)).collect()
+}
+
 fn dense<S: Scalar>(mesh: &TriMesh, vertices: &[VertexId], options: &MatrixOptions) -> DenseMatrix {
-    let mut matrix = DenseMatrix::new(vertices.len());
-    let summary = distance_matrix::<S, _>(mesh, vertices, options, |row| matrix.insert(&row))
-        .expect("a valid selection");
+    let n = vertices.len();
+    let mut matrix = DenseMatrix::new(n, n);
+    let sources = points(vertices);
+    let summary =
+        distance_matrix::<S, _>(mesh, &sources, vertices, options, |row| matrix.insert(&row))
+            .expect("a valid selection");
     assert_eq!(summary.rows, vertices.len());
     matrix
 }
@@ -103,7 +111,8 @@ fn stopping_at_the_selection_saves_events() {
             seen
         });
     let mut events = 0;
-    distance_matrix::<f64, Infallible>(&mesh, &near, &MatrixOptions::default(), |row| {
+    let options = MatrixOptions::default();
+    distance_matrix::<f64, Infallible>(&mesh, &points(&near), &near, &options, |row| {
         events += row.wedges_propagated;
         Ok(())
     })
@@ -130,7 +139,7 @@ fn symmetrize_min_gives_the_smaller_of_each_pair() {
     let vertices = random_vertices(&mesh, 20, 9);
     let one_way = dense::<f64>(&mesh, &vertices, &MatrixOptions::default());
     let mut symmetric = one_way.clone();
-    symmetric.symmetrize_min();
+    symmetric.symmetrize_min().unwrap();
     for i in 0..vertices.len() {
         assert_eq!(symmetric.get(i, i), 0.0);
         for j in 0..vertices.len() {
@@ -155,7 +164,7 @@ fn radius_limited_rows_are_the_dense_entries_within_the_radius() {
     let options = MatrixOptions::default()
         .with_max_distance(radius)
         .with_threads(2);
-    distance_matrix::<f64, Infallible>(&mesh, &vertices, &options, |row| {
+    distance_matrix::<f64, Infallible>(&mesh, &points(&vertices), &vertices, &options, |row| {
         sparse.insert(&row);
         Ok(())
     })
@@ -194,20 +203,37 @@ fn bad_selections_are_errors() {
     let cube = shapes::cube();
     let ignore = |_: MatrixRow| Ok::<(), Infallible>(());
     let options = MatrixOptions::default();
+    let one = [VertexId(1)];
     assert!(matches!(
-        distance_matrix::<f64, _>(&cube, &[], &options, ignore),
+        distance_matrix::<f64, _>(&cube, &[], &one, &options, ignore),
         Err(MatrixError::Empty)
     ));
     assert!(matches!(
-        distance_matrix::<f64, _>(&cube, &[VertexId(1), VertexId(8)], &options, ignore),
-        Err(MatrixError::Vertex {
+        distance_matrix::<f64, _>(&cube, &points(&one), &[], &options, ignore),
+        Err(MatrixError::Empty)
+    ));
+    let beyond = [VertexId(1), VertexId(8)];
+    assert!(matches!(
+        distance_matrix::<f64, _>(&cube, &points(&one), &beyond, &options, ignore),
+        Err(MatrixError::Target {
             index: 1,
             error: PointError::VertexOutOfRange { vertex: 8, .. }
         })
     ));
+    let edge = SurfacePoint::Edge {
+        edge: EdgeId(0),
+        t: 1.5,
+    };
+    assert!(matches!(
+        distance_matrix::<f64, _>(&cube, &[edge], &one, &options, ignore),
+        Err(MatrixError::Source {
+            index: 0,
+            error: PointError::EdgeParameter { .. }
+        })
+    ));
     let none = MatrixOptions::default().with_threads(0);
     assert!(matches!(
-        distance_matrix::<f64, _>(&cube, &[VertexId(1)], &none, ignore),
+        distance_matrix::<f64, _>(&cube, &points(&one), &one, &none, ignore),
         Err(MatrixError::NoThreads)
     ));
 }
@@ -218,7 +244,8 @@ fn a_failing_sink_stops_the_run() {
     let vertices = random_vertices(&mesh, 40, 11);
     let mut seen = 0;
     let options = MatrixOptions::default().with_threads(2);
-    let result = distance_matrix::<f64, _>(&mesh, &vertices, &options, |row| {
+    let sources = points(&vertices);
+    let result = distance_matrix::<f64, _>(&mesh, &sources, &vertices, &options, |row| {
         seen += 1;
         if seen == 3 {
             Err(format!("disk full at row {}", row.index))
@@ -231,19 +258,56 @@ fn a_failing_sink_stops_the_run() {
 }
 
 #[test]
-fn a_row_of_the_wrong_size_is_refused() {
-    let mut matrix = DenseMatrix::new(2);
-    let mut rows = Vec::new();
-    distance_matrix::<f64, Infallible>(
-        &shapes::cube(),
-        &[0, 1, 2].map(VertexId),
-        &MatrixOptions::default(),
-        |row| {
-            rows.push(row);
-            Ok(())
-        },
-    )
+fn points_to_other_targets_make_a_rectangular_matrix() {
+    let mesh = bumpy_sphere(9);
+    let mut rng = SplitMix64::new(12);
+    let sources: Vec<SurfacePoint> = (0..5)
+        .map(|_| {
+            let face = FaceId((rng.next_u64() % mesh.face_count() as u64) as u32);
+            SurfacePoint::Face {
+                face,
+                bary: [0.2, 0.3, 0.5],
+            }
+        })
+        .collect();
+    let targets = random_vertices(&mesh, 9, 13);
+    let mut matrix = DenseMatrix::new(5, 9);
+    let options = MatrixOptions::default().with_threads(2);
+    distance_matrix::<f64, _>(&mesh, &sources, &targets, &options, |row| {
+        matrix.insert(&row)
+    })
     .unwrap();
-    let error = matrix.insert(&rows[0]).unwrap_err();
-    assert_eq!((error.length, error.size), (3, 2));
+    for (i, source) in sources.iter().enumerate() {
+        let single = geodesic_distances::<f64>(
+            &mesh,
+            std::slice::from_ref(source),
+            &PropagateOptions::default(),
+        )
+        .unwrap();
+        for (j, t) in targets.iter().enumerate() {
+            assert_eq!(matrix.get(i, j).to_bits(), single[t.index()].to_bits());
+        }
+    }
+    assert_eq!(
+        matrix.symmetrize_min(),
+        Err(ShapeError::NotSquare {
+            rows: 5,
+            columns: 9
+        })
+    );
+    let mut wrong = DenseMatrix::new(9, 5);
+    let mut first = None;
+    distance_matrix::<f64, Infallible>(&mesh, &sources[..1], &targets, &options, |row| {
+        first = Some(row);
+        Ok(())
+    })
+    .unwrap();
+    assert!(matches!(
+        wrong.insert(&first.unwrap()),
+        Err(ShapeError::Row {
+            length: 9,
+            columns: 5,
+            ..
+        })
+    ));
 }

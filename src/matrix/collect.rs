@@ -1,48 +1,55 @@
 //! Distance matrices gathered in memory from their rows, dense or sparse, and made symmetric.
 
-use super::{MatrixRow, RowSizeError};
+use super::{MatrixRow, ShapeError};
 
-/// A square matrix of distances, row-major, gathered from [`MatrixRow`]s.
+/// A matrix of distances, row-major, gathered from [`MatrixRow`]s.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DenseMatrix {
-    size: usize,
+    rows: usize,
+    columns: usize,
     values: Vec<f64>,
 }
 
 impl DenseMatrix {
-    /// A `size` by `size` matrix, every entry `f64::INFINITY` until its row arrives.
-    pub fn new(size: usize) -> Self {
+    /// A `rows` by `columns` matrix, every entry `f64::INFINITY` until its row arrives.
+    pub fn new(rows: usize, columns: usize) -> Self {
         DenseMatrix {
-            size,
-            values: vec![f64::INFINITY; size * size],
+            rows,
+            columns,
+            values: vec![f64::INFINITY; rows * columns],
         }
     }
 
-    /// The number of rows (and of columns).
-    pub fn size(&self) -> usize {
-        self.size
+    /// The number of rows and of columns.
+    pub fn shape(&self) -> (usize, usize) {
+        (self.rows, self.columns)
     }
 
     /// Stores a row.
     ///
     /// # Errors
-    /// [`RowSizeError`] if the row's index or length does not fit the matrix.
-    pub fn insert(&mut self, row: &MatrixRow) -> Result<(), RowSizeError> {
-        if row.index >= self.size || row.distances.len() != self.size {
-            return Err(RowSizeError {
+    /// [`ShapeError::Row`] if the row's index or length does not fit the matrix.
+    pub fn insert(&mut self, row: &MatrixRow) -> Result<(), ShapeError> {
+        if row.index >= self.rows || row.distances.len() != self.columns {
+            return Err(ShapeError::Row {
                 index: row.index,
                 length: row.distances.len(),
-                size: self.size,
+                rows: self.rows,
+                columns: self.columns,
             });
         }
-        let at = row.index * self.size;
-        self.values[at..at + self.size].copy_from_slice(&row.distances);
+        let at = row.index * self.columns;
+        self.values[at..at + self.columns].copy_from_slice(&row.distances);
         Ok(())
     }
 
     /// The entry in row `i`, column `j`.
+    ///
+    /// # Panics
+    /// If `i` or `j` is out of the matrix, as slice indexing does.
     pub fn get(&self, i: usize, j: usize) -> f64 {
-        self.values[i * self.size + j]
+        assert!(j < self.columns, "column {j} of {}", self.columns);
+        self.values[i * self.columns + j]
     }
 
     /// The entries, row after row.
@@ -50,9 +57,19 @@ impl DenseMatrix {
         &self.values
     }
 
-    /// Replaces `d(i, j)` and `d(j, i)` by the smaller of the two.
-    pub fn symmetrize_min(&mut self) {
-        let n = self.size;
+    /// Replaces `d(i, j)` and `d(j, i)` by the smaller of the two, in a matrix among selected
+    /// vertices (the same vertices as sources and as targets).
+    ///
+    /// # Errors
+    /// [`ShapeError::NotSquare`] if the matrix is not square.
+    pub fn symmetrize_min(&mut self) -> Result<(), ShapeError> {
+        if self.rows != self.columns {
+            return Err(ShapeError::NotSquare {
+                rows: self.rows,
+                columns: self.columns,
+            });
+        }
+        let n = self.rows;
         for i in 0..n {
             for j in i + 1..n {
                 let d = self.values[i * n + j].min(self.values[j * n + i]);
@@ -60,6 +77,7 @@ impl DenseMatrix {
                 self.values[j * n + i] = d;
             }
         }
+        Ok(())
     }
 }
 
@@ -92,7 +110,8 @@ impl SparseMatrix {
         self.entries.sort_unstable_by_key(|&(i, j, _)| (i, j));
     }
 
-    /// Makes the matrix symmetric, each entry the smaller of `d(i, j)` and `d(j, i)`; an entry
+    /// Makes a matrix among selected vertices symmetric, each entry the smaller of `d(i, j)`
+    /// and `d(j, i)`; an entry
     /// present in one direction only (within the radius one way, rounded past it the other) is
     /// taken as it is. Sorts the entries.
     pub fn symmetrize_min(&mut self) {

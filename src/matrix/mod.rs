@@ -1,26 +1,28 @@
-//! Distance matrices among selected vertices: one propagation per source, stopped as soon as
-//! every selected vertex is final ([`PropagateOptions::stop_points`]) or at a maximum distance
-//! (radius-limited rows, kept sparse by [`SparseMatrix`]), sources run in parallel.
+//! Distance matrices from source points to target vertices (among selected vertices: the same
+//! vertices as both): one propagation per source, stopped as soon as every target is final
+//! ([`PropagateOptions::stop_points`](crate::PropagateOptions::stop_points)) or at a maximum
+//! distance (radius-limited rows, kept sparse by [`SparseMatrix`]), sources run in parallel.
 //!
 //! Rows are handed to the caller's sink as they are done, each with its index, so that only
 //! the propagations in flight (one per thread) and the rows waiting for the sink are in memory.
-//! Row `i` holds the distances from `vertices[i]` to every `vertices[j]`: the very values a
-//! single-source [`propagate`](crate::propagate) from `vertices[i]` gives them. One-directional
+//! Row `i` holds the distances from `sources[i]` to every `targets[j]`: the very values a
+//! single-source [`propagate`](crate::propagate) from `sources[i]` gives them. One-directional
 //! results differ from their transposes in the last bits (the two propagations round
-//! differently); [`DenseMatrix::symmetrize_min`] and [`SparseMatrix::symmetrize_min`] make them
-//! symmetric.
+//! differently); [`DenseMatrix::symmetrize_min`] and [`SparseMatrix::symmetrize_min`] make a
+//! matrix among selected vertices symmetric.
 //!
 //! # Example
 //! ```
 //! use exact_geodesics::matrix::{distance_matrix, DenseMatrix, MatrixOptions};
-//! use exact_geodesics::{mesh::shapes, VertexId};
+//! use exact_geodesics::{mesh::shapes, SurfacePoint, VertexId};
 //! let cube = shapes::cube();
 //! let corners = [VertexId(0), VertexId(1), VertexId(6)];
-//! let mut matrix = DenseMatrix::new(corners.len());
-//! distance_matrix::<f64, _>(&cube, &corners, &MatrixOptions::default(), |row| {
+//! let sources = corners.map(SurfacePoint::Vertex);
+//! let mut matrix = DenseMatrix::new(3, 3);
+//! distance_matrix::<f64, _>(&cube, &sources, &corners, &MatrixOptions::default(), |row| {
 //!     matrix.insert(&row)
 //! })?;
-//! matrix.symmetrize_min();
+//! matrix.symmetrize_min()?;
 //! assert!((matrix.get(0, 1) - 1.0).abs() < 1e-12);
 //! assert_eq!(matrix.get(0, 1), matrix.get(1, 0));
 //! assert!((matrix.get(2, 0) - 5f64.sqrt()).abs() < 1e-12);
@@ -33,7 +35,7 @@ mod run;
 pub use collect::{DenseMatrix, SparseMatrix};
 pub use run::distance_matrix;
 
-use crate::mmp::PointError;
+use crate::mmp::{PointError, SurfacePoint};
 use crate::VertexId;
 use thiserror::Error;
 
@@ -75,10 +77,10 @@ impl MatrixOptions {
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub struct MatrixRow {
-    /// The row's index: its source is `vertices[index]`.
+    /// The row's index: its source is `sources[index]`.
     pub index: usize,
-    /// The distance to each selected vertex, in their order (`f64::INFINITY` where unreachable
-    /// or beyond the maximum distance).
+    /// The distance to each target, in their order (`f64::INFINITY` where unreachable or
+    /// beyond the maximum distance).
     pub distances: Vec<f64>,
     /// Decisions of the propagation the backend left uncertified (0 for backends that do not
     /// certify).
@@ -98,32 +100,54 @@ impl MatrixRow {
     }
 }
 
-/// A row that does not fit a [`DenseMatrix`].
+/// What does not fit the shape of a [`DenseMatrix`].
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
-#[error("row {index} of {length} distances does not fit a {size} by {size} matrix")]
-pub struct RowSizeError {
-    /// The row's index.
-    pub index: usize,
-    /// Its number of distances.
-    pub length: usize,
-    /// The matrix's number of rows and columns.
-    pub size: usize,
+#[non_exhaustive]
+pub enum ShapeError {
+    /// A row whose index or length does not fit.
+    #[error("row {index} of {length} distances does not fit a {rows} by {columns} matrix")]
+    Row {
+        /// The row's index.
+        index: usize,
+        /// Its number of distances.
+        length: usize,
+        /// The matrix's number of rows.
+        rows: usize,
+        /// The matrix's number of columns.
+        columns: usize,
+    },
+    /// Symmetrization of a matrix that is not square.
+    #[error("a {rows} by {columns} matrix is not square")]
+    NotSquare {
+        /// The matrix's number of rows.
+        rows: usize,
+        /// The matrix's number of columns.
+        columns: usize,
+    },
 }
 
 /// Why a distance matrix could not be computed.
 #[derive(Debug, Error)]
 #[non_exhaustive]
 pub enum MatrixError<E> {
-    /// A selected vertex is not a vertex of the mesh.
-    #[error("selected vertex {index}: {error}")]
-    Vertex {
-        /// Its position in the selection.
+    /// A source is not a point of the mesh.
+    #[error("source {index}: {error}")]
+    Source {
+        /// Its position among the sources.
         index: usize,
         /// What is wrong with it.
         error: PointError,
     },
-    /// No vertex was selected.
-    #[error("no vertex selected")]
+    /// A target is not a vertex of the mesh.
+    #[error("target {index}: {error}")]
+    Target {
+        /// Its position among the targets.
+        index: usize,
+        /// What is wrong with it.
+        error: PointError,
+    },
+    /// No source or no target was given.
+    #[error("a matrix needs at least one source and one target")]
     Empty,
     /// Zero threads were asked for.
     #[error("the number of threads must be at least 1")]
@@ -148,15 +172,24 @@ pub struct MatrixSummary {
     pub wedges_propagated: u64,
 }
 
-/// The vertices selected for a matrix, checked against the mesh.
-fn validate<E>(mesh: &crate::TriMesh, vertices: &[VertexId]) -> Result<(), MatrixError<E>> {
-    if vertices.is_empty() {
+/// The sources and targets of a matrix, checked against the mesh.
+fn validate<E>(
+    mesh: &crate::TriMesh,
+    sources: &[SurfacePoint],
+    targets: &[VertexId],
+) -> Result<(), MatrixError<E>> {
+    if sources.is_empty() || targets.is_empty() {
         return Err(MatrixError::Empty);
     }
-    for (index, &v) in vertices.iter().enumerate() {
-        crate::SurfacePoint::Vertex(v)
+    for (index, source) in sources.iter().enumerate() {
+        source
             .validated(mesh)
-            .map_err(|error| MatrixError::Vertex { index, error })?;
+            .map_err(|error| MatrixError::Source { index, error })?;
+    }
+    for (index, &v) in targets.iter().enumerate() {
+        SurfacePoint::Vertex(v)
+            .validated(mesh)
+            .map_err(|error| MatrixError::Target { index, error })?;
     }
     Ok(())
 }

@@ -7,25 +7,26 @@ use crate::scalar::Scalar;
 use rayon::prelude::*;
 use std::sync::mpsc;
 
-/// The distance matrix among `vertices` on the backend `S`: for each `i`, the distances from
-/// `vertices[i]` to every `vertices[j]`, handed to `sink` as a [`MatrixRow`] as soon as it is
-/// done (in completion order; `row.index` says which it is). Each row is one propagation from
-/// its source, stopped once every selected vertex is final (or at
+/// The distance matrix from `sources` to `targets` on the backend `S`: for each `i`, the
+/// distances from `sources[i]` to every `targets[j]`, handed to `sink` as a [`MatrixRow`] as
+/// soon as it is done (in completion order; `row.index` says which it is). Each row is one
+/// propagation from its source, stopped once every target is final (or at
 /// [`MatrixOptions::max_distance`]), so its distances are bit for bit those of a full
 /// single-source run. At most [`MatrixOptions::threads`] propagations run at once, and as many
 /// finished rows wait for the sink.
 ///
 /// # Errors
-/// [`MatrixError`] if no vertex is selected, a selected vertex is not one of the mesh, the
-/// threads cannot start, or the sink fails (the sink's error; the propagations still running
-/// finish, no new one starts).
+/// [`MatrixError`] if there is no source or no target, a source or target is not one of the
+/// mesh, the threads cannot start, or the sink fails (the sink's error; the propagations still
+/// running finish, no new one starts).
 pub fn distance_matrix<S: Scalar, E>(
     mesh: &TriMesh,
-    vertices: &[VertexId],
+    sources: &[SurfacePoint],
+    targets: &[VertexId],
     options: &MatrixOptions,
     mut sink: impl FnMut(MatrixRow) -> Result<(), E>,
 ) -> Result<MatrixSummary, MatrixError<E>> {
-    validate(mesh, vertices)?;
+    validate(mesh, sources, targets)?;
     let threads = match options.threads {
         Some(0) => return Err(MatrixError::NoThreads),
         Some(n) => n,
@@ -37,7 +38,7 @@ pub fn distance_matrix<S: Scalar, E>(
         .map_err(|e| MatrixError::Threads(e.to_string()))?;
     // A vertex that no face uses is never reached: waiting for it would run every
     // propagation to its end.
-    let stops = vertices
+    let stops = targets
         .iter()
         .filter(|&&v| !mesh.vertex_faces(v).is_empty())
         .map(|&v| SurfacePoint::Vertex(v));
@@ -45,12 +46,12 @@ pub fn distance_matrix<S: Scalar, E>(
     propagate_options.max_distance = options.max_distance;
     propagate_options.precision_cap = options.precision_cap;
     let row = |index: usize| -> MatrixRow {
-        let source = [SurfacePoint::Vertex(vertices[index])];
-        let field = propagate::<S>(mesh, &source, &propagate_options)
-            .expect("the selected vertices were validated");
+        let source = std::slice::from_ref(&sources[index]);
+        let field = propagate::<S>(mesh, source, &propagate_options)
+            .expect("the sources and targets were validated");
         MatrixRow {
             index,
-            distances: vertices.iter().map(|&v| field.vertex_distance(v)).collect(),
+            distances: targets.iter().map(|&v| field.vertex_distance(v)).collect(),
             uncertified: field.stats().backend.uncertified,
             wedges_propagated: field.stats().wedges_propagated,
         }
@@ -61,7 +62,7 @@ pub fn distance_matrix<S: Scalar, E>(
     pool.in_place_scope(|scope| {
         scope.spawn(|_| {
             // A failed send means the sink has given up: stop taking new sources.
-            let _ = (0..vertices.len())
+            let _ = (0..sources.len())
                 .into_par_iter()
                 .with_max_len(1)
                 .try_for_each_with(sender, |sender, index| sender.send(row(index)));

@@ -9,7 +9,7 @@ use exact_geodesics::matrix::{
     distance_matrix, DenseMatrix, MatrixOptions, MatrixRow, MatrixSummary, SparseMatrix,
 };
 use exact_geodesics::scalar::exact;
-use exact_geodesics::{Scalar, TriMesh, VertexId};
+use exact_geodesics::{Scalar, SurfacePoint, TriMesh, VertexId};
 use std::path::PathBuf;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -121,31 +121,33 @@ fn write<S: Scalar>(
     );
     let mut sink = match (format, gather) {
         (Format::Mtx, true) => Sink::Sparse(SparseMatrix::new()),
-        (_, true) => Sink::Dense(DenseMatrix::new(n)),
+        (_, true) => Sink::Dense(DenseMatrix::new(n, n)),
         (Format::Npy, false) => Sink::Npy(NpyFile::create(&args.out, n)?),
         (_, false) => Sink::Mtx(MtxFile::create(&args.out, n, &comment)?),
     };
     let bar = progress::row_bar(n);
-    let summary = distance_matrix::<S, String>(mesh, vertices, options, |row: MatrixRow| {
-        bar.inc(1);
-        match &mut sink {
-            Sink::Npy(file) => file.row(row.index, &row.distances),
-            Sink::Mtx(file) => file.entries(row.finite_entries()),
-            Sink::Dense(matrix) => matrix.insert(&row).map_err(|e| e.to_string()),
-            Sink::Sparse(matrix) => {
-                matrix.insert(&row);
-                Ok(())
+    let sources: Vec<SurfacePoint> = vertices.iter().map(|&v| SurfacePoint::Vertex(v)).collect();
+    let summary =
+        distance_matrix::<S, String>(mesh, &sources, vertices, options, |row: MatrixRow| {
+            bar.inc(1);
+            match &mut sink {
+                Sink::Npy(file) => file.row(row.index, &row.distances),
+                Sink::Mtx(file) => file.entries(row.finite_entries()),
+                Sink::Dense(matrix) => matrix.insert(&row).map_err(|e| e.to_string()),
+                Sink::Sparse(matrix) => {
+                    matrix.insert(&row);
+                    Ok(())
+                }
             }
-        }
-    })
-    .map_err(|e| e.to_string())?;
+        })
+        .map_err(|e| e.to_string())?;
     bar.finish_and_clear();
     match sink {
         Sink::Npy(file) => file.finish()?,
         Sink::Mtx(file) => file.finish()?,
         Sink::Dense(mut matrix) => {
             if args.symmetrize.is_some() {
-                matrix.symmetrize_min();
+                matrix.symmetrize_min().map_err(|e| e.to_string())?;
             }
             if format == Format::Csv {
                 let names: Vec<u32> = vertices.iter().map(|v| v.0).collect();
