@@ -50,8 +50,10 @@ class GeodesicSolver:
         self,
         sources: Union[Point, Indices, Sequence[Point]],
         max_distance: Optional[float] = None,
+        stop_points: Optional[Union[Point, Indices, Sequence[Point]]] = None,
     ) -> GeodesicField:
-        """The distance field of ``sources`` (GIL released while propagating)."""
+        """The distance field of ``sources``, stopped once ``stop_points`` are final (GIL
+        released while propagating)."""
     def distance_matrix(
         self,
         sources: Union[Point, Indices, Sequence[Point]],

@@ -1,17 +1,15 @@
 //! The stateful solver: a validated mesh and a backend, from which fields are propagated, one
-//! at a time or one per source on every core.
+//! at a time or one per source on every core (the library's distance matrices).
 
 use crate::field::{AnyField, GeodesicField};
 use crate::input::{self, rows_of_three, value_error};
-use exact_geodesics::scalar::{Adaptive, Backend, Real, Scalar};
-use exact_geodesics::{
-    propagate, GeodesicField as Field, PointError, PropagateOptions, SurfacePoint, TriMesh,
-    VertexId,
-};
-use numpy::ndarray::Array2;
+use exact_geodesics::matrix::{distance_matrix, MatrixOptions, MatrixRow};
+use exact_geodesics::scalar::{Adaptive, Backend, Real};
+use exact_geodesics::{SurfacePoint, TriMesh, VertexId};
+use numpy::ndarray::{Array2, ArrayView1};
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::prelude::*;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::convert::Infallible;
 use std::sync::Arc;
 
 /// Geodesic distances and paths on one triangle mesh, by the MMP algorithm in wedge form
@@ -58,18 +56,25 @@ impl GeodesicSolver {
     ///
     /// ``sources`` is one point or a sequence of points (a NumPy array of vertex indices of any
     /// integer dtype, or points as ``v``, ``("edge", a, b, t)``, ``("face", f, (u, v, w))``).
-    /// With ``max_distance``, points farther than it are unreachable (``inf``). The GIL is
+    /// With ``max_distance``, points farther than it are unreachable (``inf``). With
+    /// ``stop_points`` (points as ``sources``), the propagation stops as soon as their
+    /// distances are final: theirs, and those of every vertex no farther than the farthest of
+    /// them, are the full run's; other vertices hold an upper bound or ``inf``. The GIL is
     /// released while the wedges propagate. Raises ``ValueError`` for no source, a point that
     /// is not on the mesh, or a negative ``max_distance``.
-    #[pyo3(signature = (sources, max_distance = None))]
+    #[pyo3(signature = (sources, max_distance = None, stop_points = None))]
     fn propagate(
         &self,
         py: Python<'_>,
         sources: &Bound<'_, PyAny>,
         max_distance: Option<f64>,
+        stop_points: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<GeodesicField> {
         let sources = input::surface_points(&self.mesh, sources)?;
-        let options = input::options(max_distance, self.precision_cap)?;
+        let mut options = input::options(max_distance, self.precision_cap)?;
+        if let Some(points) = stop_points {
+            options.stop_points = input::surface_points(&self.mesh, points)?;
+        }
         let (mesh, backend) = (Arc::clone(&self.mesh), self.backend);
         let field = py
             .detach(move || AnyField::propagate(&mesh, backend, &sources, &options))
@@ -77,8 +82,9 @@ impl GeodesicSolver {
         Ok(GeodesicField::new(field, backend, self.precision_cap))
     }
 
-    /// The distances from each source alone (one propagation per source) to ``targets``: a
-    /// float64 array of shape (len(sources), len(targets)), ``inf`` where unreachable.
+    /// The distances from each source alone (one propagation per source, stopped once every
+    /// target is final) to ``targets``: a float64 array of shape (len(sources), len(targets)),
+    /// ``inf`` where unreachable; each row is what ``propagate`` from its source gives.
     ///
     /// ``targets`` are vertex indices of any integer dtype (all vertices if ``None``).
     /// Propagations run on ``threads`` threads (all cores if ``None``) with the GIL released.
@@ -92,26 +98,19 @@ impl GeodesicSolver {
         threads: Option<usize>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let sources = input::surface_points(&self.mesh, sources)?;
-        let targets: Vec<VertexId> = match targets {
-            Some(targets) => self.vertex_ids(targets, "targets")?,
-            None => (0..self.mesh.vertex_count() as u32).map(VertexId).collect(),
-        };
-        let options = input::options(max_distance, self.precision_cap)?;
-        let threads = thread_count(threads)?;
-        let rows = py
-            .detach(|| {
-                for_each_source(&self.mesh, self.backend, &sources, &options, threads, |f| {
-                    targets
-                        .iter()
-                        .map(|&v| f.vertex_distance(v))
-                        .collect::<Vec<f64>>()
+        let targets = self.targets(targets, "targets")?;
+        let options = self.matrix_options(max_distance, threads)?;
+        let mut matrix = Array2::from_elem((sources.len(), targets.len()), f64::INFINITY);
+        if !matrix.is_empty() {
+            py.detach(|| {
+                self.rows(&sources, &targets, &options, |row| {
+                    matrix
+                        .row_mut(row.index)
+                        .assign(&ArrayView1::from(&row.distances));
                 })
-            })
-            .map_err(value_error)?;
-        let flat: Vec<f64> = rows.into_iter().flatten().collect();
-        Ok(Array2::from_shape_vec((sources.len(), targets.len()), flat)
-            .expect("one row of len(targets) per source")
-            .into_pyarray(py))
+            })?;
+        }
+        Ok(matrix.into_pyarray(py))
     }
 
     /// The distances from every source vertex to every vertex within ``max_distance`` of it,
@@ -131,32 +130,24 @@ impl GeodesicSolver {
         Bound<'py, PyArray1<i64>>,
         Bound<'py, PyArray1<i64>>,
     )> {
-        let vertices: Vec<VertexId> = match sources {
-            Some(sources) => self.vertex_ids(sources, "sources")?,
-            None => (0..self.mesh.vertex_count() as u32).map(VertexId).collect(),
-        };
+        let vertices = self.targets(sources, "sources")?;
         let sources: Vec<SurfacePoint> =
             vertices.iter().map(|&v| SurfacePoint::Vertex(v)).collect();
-        let options = input::options(max_distance, self.precision_cap)?;
-        let threads = thread_count(threads)?;
-        let rows = py
-            .detach(|| {
-                for_each_source(&self.mesh, self.backend, &sources, &options, threads, |f| {
-                    f.vertex_distances()
-                        .into_iter()
-                        .enumerate()
-                        .filter(|&(_, d)| d.is_finite() && d != 0.0)
-                        .collect::<Vec<_>>()
+        let everywhere = self.targets(None, "targets")?;
+        let options = self.matrix_options(max_distance, threads)?;
+        let mut rows: Vec<Vec<(u32, u32, f64)>> = vec![Vec::new(); sources.len()];
+        if !sources.is_empty() {
+            py.detach(|| {
+                self.rows(&sources, &everywhere, &options, |row| {
+                    rows[row.index] = row.finite_entries().filter(|e| e.2 != 0.0).collect();
                 })
-            })
-            .map_err(value_error)?;
+            })?;
+        }
         let (mut data, mut row_index, mut column_index) = (Vec::new(), Vec::new(), Vec::new());
-        for (source, row) in vertices.iter().zip(rows) {
-            for (column, d) in row {
-                data.push(d);
-                row_index.push(i64::from(source.0));
-                column_index.push(column as i64);
-            }
+        for (i, j, d) in rows.into_iter().flatten() {
+            data.push(d);
+            row_index.push(i64::from(vertices[i as usize].0));
+            column_index.push(i64::from(j));
         }
         Ok((
             PyArray1::from_vec(py, data),
@@ -228,10 +219,13 @@ impl GeodesicSolver {
 }
 
 impl GeodesicSolver {
-    /// Vertex indices of any integer dtype, each a vertex of the mesh.
-    fn vertex_ids(&self, obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<VertexId>> {
-        let (indices, _) = input::indices(obj, what)?;
+    /// Vertex indices of any integer dtype, each a vertex of the mesh; every vertex if `None`.
+    fn targets(&self, obj: Option<&Bound<'_, PyAny>>, what: &str) -> PyResult<Vec<VertexId>> {
         let count = self.mesh.vertex_count();
+        let Some(obj) = obj else {
+            return Ok((0..count as u32).map(VertexId).collect());
+        };
+        let (indices, _) = input::indices(obj, what)?;
         indices
             .into_iter()
             .map(|v| {
@@ -245,92 +239,46 @@ impl GeodesicSolver {
             })
             .collect()
     }
-}
 
-/// The number of threads asked for, or every core.
-fn thread_count(threads: Option<usize>) -> PyResult<usize> {
-    match threads {
-        Some(0) => Err(value_error("threads must be at least 1")),
-        Some(n) => Ok(n),
-        None => Ok(std::thread::available_parallelism().map_or(1, usize::from)),
-    }
-}
-
-/// Propagates from each source alone, on up to `threads` threads, and reads each field with
-/// `read`; the results are in the order of the sources.
-fn for_each_source<T: Send>(
-    mesh: &TriMesh,
-    backend: Backend,
-    sources: &[SurfacePoint],
-    options: &PropagateOptions,
-    threads: usize,
-    read: impl Fn(&dyn Distances) -> T + Sync,
-) -> Result<Vec<T>, PointError> {
-    // Refuse a bad source before any thread starts.
-    for source in sources {
-        source.validated(mesh)?;
-    }
-    match backend {
-        Backend::F64 => each_source::<f64, T>(mesh, sources, options, threads, &read),
-        Backend::Adaptive => each_source::<Adaptive, T>(mesh, sources, options, threads, &read),
-        Backend::Exact => each_source::<Real, T>(mesh, sources, options, threads, &read),
-    }
-}
-
-/// What `for_each_source` reads of a field, whatever its backend.
-trait Distances {
-    fn vertex_distance(&self, v: VertexId) -> f64;
-    fn vertex_distances(&self) -> Vec<f64>;
-}
-
-impl<S: Scalar> Distances for Field<'_, S> {
-    fn vertex_distance(&self, v: VertexId) -> f64 {
-        Field::vertex_distance(self, v)
-    }
-
-    fn vertex_distances(&self) -> Vec<f64> {
-        Field::vertex_distances(self)
-    }
-}
-
-fn each_source<S: Scalar, T: Send>(
-    mesh: &TriMesh,
-    sources: &[SurfacePoint],
-    options: &PropagateOptions,
-    threads: usize,
-    read: &(impl Fn(&dyn Distances) -> T + Sync),
-) -> Result<Vec<T>, PointError> {
-    let next = AtomicUsize::new(0);
-    let work = || -> Result<Vec<(usize, T)>, PointError> {
-        let mut done = Vec::new();
-        loop {
-            let i = next.fetch_add(1, Ordering::Relaxed);
-            let Some(source) = sources.get(i) else {
-                return Ok(done);
-            };
-            let field = propagate::<S>(mesh, std::slice::from_ref(source), options)?;
-            done.push((i, read(&field)));
+    /// The options of a matrix: a valid `max_distance`, at least one thread.
+    fn matrix_options(
+        &self,
+        max_distance: Option<f64>,
+        threads: Option<usize>,
+    ) -> PyResult<MatrixOptions> {
+        let propagation = input::options(max_distance, self.precision_cap)?;
+        if threads == Some(0) {
+            return Err(value_error("threads must be at least 1"));
         }
-    };
-    let threads = threads.min(sources.len()).max(1);
-    let mut results: Vec<Option<T>> = std::iter::repeat_with(|| None)
-        .take(sources.len())
-        .collect();
-    std::thread::scope(|scope| {
-        let workers: Vec<_> = (1..threads).map(|_| scope.spawn(work)).collect();
-        let mine = work();
-        for found in workers
-            .into_iter()
-            .map(|w| w.join().expect("a propagation does not panic"))
-            .chain([mine])
-        {
-            for (i, value) in found? {
-                results[i] = Some(value);
+        let mut options = MatrixOptions::default();
+        options.max_distance = propagation.max_distance;
+        options.precision_cap = self.precision_cap;
+        options.threads = threads;
+        Ok(options)
+    }
+
+    /// One propagation per source with the solver's backend, on every thread asked for;
+    /// `store` receives each row as it is done.
+    fn rows(
+        &self,
+        sources: &[SurfacePoint],
+        targets: &[VertexId],
+        options: &MatrixOptions,
+        mut store: impl FnMut(MatrixRow),
+    ) -> PyResult<()> {
+        let sink = |row: MatrixRow| -> Result<(), Infallible> {
+            store(row);
+            Ok(())
+        };
+        let mesh = &self.mesh;
+        match self.backend {
+            Backend::F64 => distance_matrix::<f64, _>(mesh, sources, targets, options, sink),
+            Backend::Adaptive => {
+                distance_matrix::<Adaptive, _>(mesh, sources, targets, options, sink)
             }
+            Backend::Exact => distance_matrix::<Real, _>(mesh, sources, targets, options, sink),
         }
-        Ok(results
-            .into_iter()
-            .map(|r| r.expect("every source was propagated"))
-            .collect())
-    })
+        .map(drop)
+        .map_err(value_error)
+    }
 }

@@ -221,6 +221,40 @@ def test_distance_matrix_rows_are_single_source_fields(icosphere):
     np.testing.assert_allclose(square, square.T, rtol=1e-9)
 
 
+def test_stop_points_give_the_full_runs_distances_with_fewer_events():
+    vertices, triangles = eg.generate_mesh("icosphere:3")
+    solver = eg.GeodesicSolver(vertices, triangles)
+    full = solver.propagate(0)
+    stops = [5, 40, ("face", 100, (1, 2, 3))]
+    stopped = solver.propagate(0, stop_points=stops)
+    stats = stopped.stats()
+    assert stats["stopped_at_stop_points"] and not full.stats()["stopped_at_stop_points"]
+    assert stats["wedges_propagated"] < full.stats()["wedges_propagated"]
+    # Vertices no farther than the farthest stop point: the full run's values, bit for bit.
+    radius = max(full.distance_at(p) for p in stops)
+    near = full.distances <= radius
+    assert 0 < near.sum() < len(vertices)
+    np.testing.assert_array_equal(stopped.distances[near], full.distances[near])
+    assert (stopped.distances[~near] >= full.distances[~near]).all()
+    assert math.isclose(stopped.distance_at(stops[2]), full.distance_at(stops[2]), rel_tol=1e-12)
+    with pytest.raises(ValueError, match="face 9999 is out of range"):
+        solver.propagate(0, stop_points=[("face", 9999, (1, 1, 1))])
+
+
+def test_matrix_among_selected_vertices_is_the_single_source_runs(icosphere):
+    vertices, triangles = icosphere
+    solver = eg.GeodesicSolver(vertices, triangles)
+    selected = np.array([3, 70, 11, 150, 42])
+    square = solver.distance_matrix(selected, selected, threads=2)
+    for row, source in zip(square, selected):
+        np.testing.assert_array_equal(row, solver.propagate(int(source)).distances[selected])
+    sparse = eg.distance_matrix_of_selected_points(vertices, triangles, selected)
+    for i, p in enumerate(selected):
+        for j, q in enumerate(selected):
+            if i < j:
+                assert sparse[p, q] == sparse[q, p] == square[i, j]
+
+
 def test_mesh_io_round_trip(tmp_path, icosphere):
     vertices, triangles = icosphere
     obj = tmp_path / "sphere.obj"
