@@ -1,17 +1,21 @@
 #!/usr/bin/env python3
 """Benchmark the exact-geodesics CLI against gdist (Kirsanov's exact MMP).
 
-For every model (an OBJ file in ../shared/models, relative to the repository)
-and one source vertex, this runs three fresh processes:
+For every model (an OBJ file in ../shared/models, relative to the repository,
+and generated regular meshes written as OBJ files into OUT/generated) and one
+source vertex, this runs fresh processes, taking turns --repeats times:
 
 1. gdist_worker.py in the venv made by setup_venv.sh: one
    ``gdist.compute_gdist`` call, timed inside the worker;
-2. ``exact-geodesics stats MODEL --source v:S``: a JSON object whose
-   ``propagation_seconds``, ``wedges`` and ``wedge_memory_bytes`` are read;
-3. ``exact-geodesics distance MODEL --source v:S --format csv``: the distance
-   of every vertex, compared with gdist's.
+2. ``exact-geodesics distance MODEL --source v:S --format csv``: the distance
+   of every vertex, compared with gdist's;
 
-The peak RSS and the wall time of each child are measured with ``os.wait4``.
+then once ``exact-geodesics stats MODEL --source v:S``: a JSON object whose
+``propagation_seconds``, ``wedges``, ``wedges_per_edge`` and
+``wedge_memory_bytes`` are read.
+
+The peak RSS and the wall time of each child are measured with ``os.wait4``;
+each figure of the repeated runs is their median.
 Results go to OUT/benchmark.json and OUT/benchmark.csv (rewritten after each
 model), a table goes to stdout, progress to stderr. The exit status is 0 when
 every run succeeded (whatever the timings and differences), 1 when some run
@@ -28,6 +32,7 @@ import math
 import os
 import platform
 import signal
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -51,11 +56,16 @@ CSV_COLUMNS = [
     "vertices",
     "faces",
     "source",
+    "repeats",
     "ours_propagation_seconds",
     "gdist_cpu_seconds",
     "gdist_wall_seconds",
     "ratio_ours_over_gdist",
+    "ratio_ours_wall_over_gdist",
+    "gdist_process_wall_seconds",
     "ours_wedges",
+    "ours_wedges_per_edge_mean",
+    "ours_wedges_per_edge_max",
     "ours_wedge_memory_bytes",
     "ours_stats_wall_seconds",
     "ours_stats_peak_rss_bytes",
@@ -181,6 +191,9 @@ def parse_stats(path):
     for key, kind in expected.items():
         if not isinstance(stats.get(key), kind) or isinstance(stats.get(key), bool):
             raise RunError(f"{path}: stats JSON lacks a numeric {key!r}")
+    per_edge = stats.get("wedges_per_edge")
+    if not isinstance(per_edge, dict) or not all(isinstance(per_edge.get(k), (int, float)) for k in ("mean", "max")):
+        raise RunError(f"{path}: stats JSON lacks wedges_per_edge mean and max")
     return stats
 
 
@@ -215,45 +228,88 @@ def compare(ours, reference):
     }
 
 
-def benchmark_model(name, mesh, args, raw_dir):
-    """Run gdist and both CLI commands on one model; return its result dict."""
-    result = dict.fromkeys(CSV_COLUMNS)
-    result.update(model=name, source=args.source, errors=[])
-    source_spec = f"v:{args.source}"
-    gdist_distances = ours_distances = None
+def median(values):
+    """The median of the figures of the repeated runs, None without any."""
+    return statistics.median(values) if values else None
 
-    try:
-        report_path = raw_dir / f"{name}.gdist.json"
-        distances_path = raw_dir / f"{name}.gdist.txt"
-        cmd = [str(args.venv_python), str(WORKER), str(mesh), "--source", str(args.source),
-               "--distances", str(distances_path)]
-        run_measured(cmd, report_path, args.timeout)
-        report = json.loads(report_path.read_text(encoding="utf-8"))
-        gdist_distances = read_distances_text(distances_path)
+
+def run_gdist(mesh, args, raw_dir, name):
+    """One gdist worker process: its report, with the whole process's wall time added."""
+    report_path = raw_dir / f"{name}.gdist.json"
+    distances_path = raw_dir / f"{name}.gdist.txt"
+    cmd = [str(args.venv_python), str(WORKER), str(mesh), "--source", str(args.source),
+           "--distances", str(distances_path)]
+    wall, _ = run_measured(cmd, report_path, args.timeout)
+    report = json.loads(report_path.read_text(encoding="utf-8"))
+    report["process_wall_seconds"] = wall
+    return report, read_distances_text(distances_path)
+
+
+def run_ours_distance(mesh, args, raw_dir, name, vertex_count):
+    """One ``distance`` process: its wall time, peak RSS and distances."""
+    csv_path = raw_dir / f"{name}.ours.csv"
+    cmd = [str(args.binary), "distance", str(mesh), "--source", f"v:{args.source}", "--format", "csv"]
+    wall, peak = run_measured(cmd, csv_path, args.timeout)
+    return wall, peak, read_distances_csv(csv_path, vertex_count)
+
+
+def benchmark_model(name, mesh, args, raw_dir):
+    """Run gdist and our ``distance`` in turns, then our ``stats``, on one model; return its
+    result dict (medians of the repeated runs)."""
+    result = dict.fromkeys(CSV_COLUMNS)
+    result.update(model=name, source=args.source, repeats=args.repeats, errors=[])
+    gdist_distances = ours_distances = None
+    gdist_reports, ours_runs = [], []
+
+    for turn in range(1, args.repeats + 1):
+        try:
+            report, gdist_distances = run_gdist(mesh, args, raw_dir, name)
+            gdist_reports.append(report)
+            log(f"  [{turn}] gdist: {report['seconds_cpu']:.3f} s cpu, reached {report['reached']}/{report['vertices']}")
+        except (RunError, ValueError, KeyError) as exc:
+            result["errors"].append(f"gdist: {exc}")
+            log(f"  [{turn}] gdist FAILED: {exc}")
+        try:
+            vertex_count = gdist_reports[-1]["vertices"] if gdist_reports else None
+            wall, peak, ours_distances = run_ours_distance(mesh, args, raw_dir, name, vertex_count)
+            ours_runs.append((wall, peak))
+            log(f"  [{turn}] ours distance: {wall:.3f} s wall, {peak / MIB:.1f} MiB")
+        except RunError as exc:
+            result["errors"].append(f"ours distance: {exc}")
+            log(f"  [{turn}] ours distance FAILED: {exc}")
+
+    if gdist_reports:
+        last = gdist_reports[-1]
         result.update(
-            vertices=report["vertices"],
-            faces=report["faces"],
-            gdist_cpu_seconds=report["seconds_cpu"],
-            gdist_wall_seconds=report["seconds_wall"],
-            gdist_peak_rss_bytes=report["peak_rss_bytes"],
-            gdist_rss_before_bytes=report["rss_before_bytes"],
-            gdist_rss_increase_bytes=report["rss_increase_bytes"],
-            gdist_reached=report["reached"],
+            vertices=last["vertices"],
+            faces=last["faces"],
+            gdist_cpu_seconds=median([r["seconds_cpu"] for r in gdist_reports]),
+            gdist_wall_seconds=median([r["seconds_wall"] for r in gdist_reports]),
+            gdist_process_wall_seconds=median([r["process_wall_seconds"] for r in gdist_reports]),
+            gdist_peak_rss_bytes=median([r["peak_rss_bytes"] for r in gdist_reports]),
+            gdist_rss_before_bytes=median([r["rss_before_bytes"] for r in gdist_reports if r["rss_before_bytes"] is not None]),
+            gdist_rss_increase_bytes=median([r["rss_increase_bytes"] for r in gdist_reports if r["rss_increase_bytes"] is not None]),
+            gdist_reached=last["reached"],
         )
-        result["gdist"] = report
-        log(f"  gdist: {report['seconds_cpu']:.3f} s cpu, reached {report['reached']}/{report['vertices']}")
-    except RunError as exc:
-        result["errors"].append(f"gdist: {exc}")
-        log(f"  gdist FAILED: {exc}")
+        result["gdist"] = last
+    if ours_runs:
+        result.update(
+            vertices=len(ours_distances),
+            ours_distance_wall_seconds=median([wall for wall, _ in ours_runs]),
+            ours_distance_peak_rss_bytes=median([peak for _, peak in ours_runs]),
+            ours_reached=sum(1 for d in ours_distances if math.isfinite(d)),
+        )
 
     try:
         stats_path = raw_dir / f"{name}.ours-stats.json"
-        cmd = [str(args.binary), "stats", str(mesh), "--source", source_spec]
+        cmd = [str(args.binary), "stats", str(mesh), "--source", f"v:{args.source}"]
         wall, peak = run_measured(cmd, stats_path, args.timeout)
         stats = parse_stats(stats_path)
         result.update(
             ours_propagation_seconds=stats["propagation_seconds"],
             ours_wedges=stats["wedges"],
+            ours_wedges_per_edge_mean=stats["wedges_per_edge"]["mean"],
+            ours_wedges_per_edge_max=stats["wedges_per_edge"]["max"],
             ours_wedge_memory_bytes=stats["wedge_memory_bytes"],
             ours_stats_wall_seconds=wall,
             ours_stats_peak_rss_bytes=peak,
@@ -264,27 +320,83 @@ def benchmark_model(name, mesh, args, raw_dir):
         result["errors"].append(f"ours stats: {exc}")
         log(f"  ours stats FAILED: {exc}")
 
-    try:
-        csv_path = raw_dir / f"{name}.ours.csv"
-        cmd = [str(args.binary), "distance", str(mesh), "--source", source_spec, "--format", "csv"]
-        wall, peak = run_measured(cmd, csv_path, args.timeout)
-        ours_distances = read_distances_csv(csv_path, result["vertices"])
-        result.update(
-            vertices=len(ours_distances),
-            ours_distance_wall_seconds=wall,
-            ours_distance_peak_rss_bytes=peak,
-            ours_reached=sum(1 for d in ours_distances if math.isfinite(d)),
-        )
-        log(f"  ours distance: {wall:.3f} s wall, reached {result['ours_reached']}/{len(ours_distances)}")
-    except RunError as exc:
-        result["errors"].append(f"ours distance: {exc}")
-        log(f"  ours distance FAILED: {exc}")
-
     if gdist_distances is not None and ours_distances is not None:
         result.update(compare(ours_distances, gdist_distances))
-    if result["ours_propagation_seconds"] is not None and result["gdist_cpu_seconds"]:
-        result["ratio_ours_over_gdist"] = result["ours_propagation_seconds"] / result["gdist_cpu_seconds"]
+    if result["gdist_cpu_seconds"]:
+        if result["ours_propagation_seconds"] is not None:
+            result["ratio_ours_over_gdist"] = result["ours_propagation_seconds"] / result["gdist_cpu_seconds"]
+        if result["ours_distance_wall_seconds"] is not None:
+            result["ratio_ours_wall_over_gdist"] = result["ours_distance_wall_seconds"] / result["gdist_cpu_seconds"]
     return result
+
+
+def write_obj(path, vertices, triangles):
+    """Write vertices and 0-based triangles as an OBJ file."""
+    with open(path, "w", encoding="ascii") as out:
+        out.writelines(f"v {x!r} {y!r} {z!r}\n" for x, y, z in vertices)
+        out.writelines(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in triangles)
+
+
+def grid_mesh(n):
+    """The unit square in z = 0 as an n by n grid, each cell split along a diagonal."""
+    vertices = [(i / n, j / n, 0.0) for j in range(n + 1) for i in range(n + 1)]
+    at = lambda i, j: j * (n + 1) + i
+    triangles = []
+    for j in range(n):
+        for i in range(n):
+            triangles.append((at(i, j), at(i + 1, j), at(i + 1, j + 1)))
+            triangles.append((at(i, j), at(i + 1, j + 1), at(i, j + 1)))
+    return vertices, triangles
+
+
+def icosphere_mesh(level):
+    """The icosahedron subdivided ``level`` times at edge midpoints, on the unit sphere."""
+    t = (1 + 5 ** 0.5) / 2
+    corners = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t),
+               (0, -1, -t), (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    triangles = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4),
+                 (11, 10, 2), (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8),
+                 (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+
+    def unit(p):
+        norm = math.sqrt(sum(c * c for c in p))
+        return tuple(c / norm for c in p)
+
+    vertices = [unit(p) for p in corners]
+    for _ in range(level):
+        middle = {}
+
+        def mid(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in middle:
+                middle[key] = len(vertices)
+                vertices.append(unit(tuple((p + q) / 2 for p, q in zip(vertices[a], vertices[b]))))
+            return middle[key]
+
+        finer = []
+        for a, b, c in triangles:
+            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
+            finer += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        triangles = finer
+    return vertices, triangles
+
+
+def generated_models(names, out_dir):
+    """Write each generated mesh (``icosphere:L`` or ``grid:N``) as OBJ; map names to paths."""
+    out_dir.mkdir(parents=True, exist_ok=True)
+    models = {}
+    for name in names:
+        kind, _, size = name.partition(":")
+        if kind not in ("icosphere", "grid") or not size.isdigit():
+            raise SetupError(f"unknown generated mesh {name!r} (icosphere:L or grid:N)")
+        stem = f"{kind}{size}"
+        path = out_dir / f"{stem}.obj"
+        if not path.exists():
+            log(f"writing {path}")
+            mesh = icosphere_mesh(int(size)) if kind == "icosphere" else grid_mesh(int(size))
+            write_obj(path, *mesh)
+        models[stem] = path
+    return models
 
 
 def ensure_binary(binary, force_build):
@@ -359,7 +471,9 @@ def format_table(results):
         ("ours s", lambda r: num(r["ours_propagation_seconds"], ".3f")),
         ("gdist s", lambda r: num(r["gdist_cpu_seconds"], ".3f")),
         ("ratio", lambda r: num(r["ratio_ours_over_gdist"], ".2f")),
+        ("wall ratio", lambda r: num(r["ratio_ours_wall_over_gdist"], ".2f")),
         ("wedges", lambda r: num(r["ours_wedges"], "d")),
+        ("w/edge", lambda r: num(r["ours_wedges_per_edge_mean"], ".2f")),
         ("wedge MiB", lambda r: num(r["ours_wedge_memory_bytes"], ".1f", MIB)),
         ("ours RSS MiB", lambda r: num(r["ours_distance_peak_rss_bytes"], ".1f", MIB)),
         ("gdist RSS MiB", lambda r: num(r["gdist_peak_rss_bytes"], ".1f", MIB)),
@@ -403,16 +517,25 @@ def parse_args():
                         help="python of the venv made by setup_venv.sh")
     parser.add_argument("--out", type=Path, default=DEFAULT_OUT, help="output folder")
     parser.add_argument("--timeout", type=float, default=600.0, help="seconds allowed to each run")
+    parser.add_argument("--repeats", type=int, default=3,
+                        help="runs of gdist and of ours, taking turns; medians are reported")
+    parser.add_argument("--generated", type=lambda s: [m for m in s.split(",") if m],
+                        default=["icosphere:6", "icosphere:7", "grid:300", "grid:1000"],
+                        help="generated meshes, icosphere:L or grid:N, written to OUT/generated ('' for none)")
     return parser.parse_args()
 
 
 def main():
     args = parse_args()
-    if not args.models_dir.is_dir():
+    if args.repeats < 1:
+        print("error: --repeats must be at least 1", file=sys.stderr)
+        return 2
+    if not args.models_dir.is_dir() and not args.generated:
         print(f"models folder {args.models_dir} not found: nothing to benchmark", file=sys.stderr)
         return 0
     try:
-        models = select_models(args.models_dir, args.models)
+        models = select_models(args.models_dir, args.models) if args.models_dir.is_dir() else {}
+        models.update(generated_models(args.generated, args.out / "generated"))
         ensure_venv(args.venv_python)
         ensure_binary(args.binary, args.build)
     except SetupError as exc:
@@ -426,6 +549,7 @@ def main():
         "git_commit": git_commit(),
         "binary": str(args.binary),
         "source": args.source,
+        "repeats": args.repeats,
         "models_dir": str(args.models_dir),
         "machine": platform.machine(),
         "cpu_count": os.cpu_count(),
