@@ -176,6 +176,38 @@ fn csv_from_a_sources_file_is_symmetric_with_symmetrize_min() {
 }
 
 #[test]
+fn a_saved_random_selection_reads_back_as_the_same_matrix() {
+    let (saved, first, again) = (
+        temp_file("random.txt", ""),
+        temp_file("random.npy", ""),
+        temp_file("again.npy", ""),
+    );
+    let random = ["--random", "7", "--seed", "3", "--save-selection"];
+    let out = ["--out", first.to_str().unwrap()];
+    stdout(&run(&[
+        &["matrix", MESH][..],
+        &random,
+        &[saved.to_str().unwrap()],
+        &out,
+    ]
+    .concat()));
+    let text = std::fs::read_to_string(&saved).unwrap();
+    assert_eq!(text.lines().count(), 7);
+    assert!(text.lines().all(|l| l.starts_with("v:")));
+    let from_file = [
+        "--sources-file",
+        saved.to_str().unwrap(),
+        "--out",
+        again.to_str().unwrap(),
+    ];
+    stdout(&run(&[&["matrix", MESH][..], &from_file].concat()));
+    assert_eq!(
+        std::fs::read(&first).unwrap(),
+        std::fs::read(&again).unwrap()
+    );
+}
+
+#[test]
 fn bad_selections_and_outputs_are_named() {
     let out = temp_file("bad.npy", "");
     let out = out.to_str().unwrap();

@@ -66,6 +66,10 @@ pub struct MatrixArgs {
     require_certified: bool,
     #[command(flatten)]
     read: load::ReadArgs,
+    /// Also write the selected vertices, in the matrix's order, one v:I a line (what
+    /// --sources-file reads).
+    #[arg(long, value_name = "FILE")]
+    save_selection: Option<PathBuf>,
     /// Output file: .npy (dense, float64, rows in selection order), .mtx (Matrix Market,
     /// 1-based, the finite entries) or .csv (dense, with vertex names; for small selections).
     #[arg(long)]
@@ -76,6 +80,10 @@ pub fn run(args: &MatrixArgs) -> Result<(), String> {
     let format = Format::of(&args.out)?;
     let mesh = load::load_mesh(&args.mesh, &args.read.options())?;
     let vertices = selection(args, &mesh)?;
+    if let Some(path) = &args.save_selection {
+        let lines: String = vertices.iter().map(|v| format!("v:{}\n", v.0)).collect();
+        std::fs::write(path, lines).map_err(|e| format!("{}: {e}", path.display()))?;
+    }
     let mut options = MatrixOptions::default().with_precision_cap(args.precision_cap);
     options.max_distance = args.max_distance;
     options.threads = args.threads.map(|n| n as usize);
