@@ -3,12 +3,15 @@
 
 mod common;
 
+use exact_geodesics::degeneracy::{degenerate_case, DegenerateKind, MeshSize};
 use exact_geodesics::mesh::shapes::{self, SplitMix64};
 use exact_geodesics::scalar::{Adaptive, Real};
 use exact_geodesics::{
     propagate, FaceId, GeodesicField, PointError, PropagateOptions, Scalar, SurfacePoint, TriMesh,
     VertexId,
 };
+use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
 
 fn vertex(v: u32) -> SurfacePoint {
     SurfacePoint::Vertex(VertexId(v))
@@ -161,4 +164,51 @@ fn stop_point_outside_the_mesh_is_an_error() {
         result.err(),
         Some(PointError::FaceOutOfRange { face: 99, .. })
     ));
+}
+
+/// On degenerate meshes (coincident vertices, zero-area faces, slivers, extreme scales,
+/// non-manifold edges, ...): a run stopped at three vertices gives them, and every vertex no
+/// farther than the farthest of them, the full run's distances bit for bit.
+fn stopped_run_is_a_prefix_on<S: Scalar>(kind: DegenerateKind, seed: u64) -> Result<(), String> {
+    let case = degenerate_case(kind, seed, MeshSize::Full);
+    let mesh = &case.mesh;
+    let n = mesh.vertex_count() as u64;
+    let source = case.focus.first().map_or(0, |v| v.0);
+    let stops: Vec<SurfacePoint> = [seed, seed / 7, seed / 49]
+        .map(|k| vertex((k % n) as u32))
+        .to_vec();
+    let full = run::<S>(mesh, source, &[]);
+    let stopped = run::<S>(mesh, source, &stops);
+    let radius = stops
+        .iter()
+        .map(|p| full.distance_at(p).unwrap())
+        .filter(|d| d.is_finite())
+        .fold(0.0, f64::max);
+    for v in (0..mesh.vertex_count() as u32).map(VertexId) {
+        let (want, got) = (full.vertex_distance(v), stopped.vertex_distance(v));
+        if (want <= radius || stops.contains(&SurfacePoint::Vertex(v)))
+            && got.to_bits() != want.to_bits()
+        {
+            return Err(format!(
+                "{kind:?} seed {seed}: d(v{}) = {got}, full run {want}",
+                v.0
+            ));
+        }
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 300,
+        rng_seed: RngSeed::Fixed(13),
+        max_shrink_iters: 0,
+        ..ProptestConfig::default()
+    })]
+
+    #[test]
+    fn stopped_runs_are_prefixes_of_full_runs_on_degenerate_meshes((kind, seed) in common::strategies::degenerate_case()) {
+        stopped_run_is_a_prefix_on::<f64>(kind, seed).map_err(TestCaseError::fail)?;
+        stopped_run_is_a_prefix_on::<Adaptive>(kind, seed).map_err(TestCaseError::fail)?;
+    }
 }
