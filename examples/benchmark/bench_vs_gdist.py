@@ -26,9 +26,11 @@ Runs under the system python3 or the venv's; needs only the standard library.
 """
 
 import argparse
+import concurrent.futures
 import csv
 import json
 import math
+import multiprocessing
 import os
 import platform
 import signal
@@ -242,15 +244,32 @@ def run_gdist(mesh, args, raw_dir, name):
     wall, _ = run_measured(cmd, report_path, args.timeout)
     report = json.loads(report_path.read_text(encoding="utf-8"))
     report["process_wall_seconds"] = wall
-    return report, read_distances_text(distances_path)
+    return report, distances_path
 
 
-def run_ours_distance(mesh, args, raw_dir, name, vertex_count):
-    """One ``distance`` process: its wall time, peak RSS and distances."""
+def run_ours_distance(mesh, args, raw_dir, name):
+    """One ``distance`` process: its wall time, peak RSS and the CSV it wrote."""
     csv_path = raw_dir / f"{name}.ours.csv"
     cmd = [str(args.binary), "distance", str(mesh), "--source", f"v:{args.source}", "--format", "csv"]
     wall, peak = run_measured(cmd, csv_path, args.timeout)
-    return wall, peak, read_distances_csv(csv_path, vertex_count)
+    return wall, peak, csv_path
+
+
+def in_fresh_process(function, *args):
+    """``function(*args)`` in a fresh interpreter. On Linux a child's peak RSS includes its
+    parent's high-water mark at the fork (it survives fork and exec), so whatever holds a
+    mesh or its distances runs apart, and this harness stays small."""
+    with concurrent.futures.ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn")) as pool:
+        return pool.submit(function, *args).result()
+
+
+def compare_outputs(ours_csv, gdist_txt, vertex_count):
+    """Our reach, and the comparison with gdist's distances if ``gdist_txt`` is not None."""
+    ours = read_distances_csv(ours_csv, vertex_count)
+    summary = {"vertices": len(ours), "ours_reached": sum(1 for d in ours if math.isfinite(d))}
+    if gdist_txt is not None:
+        summary.update(compare(ours, read_distances_text(gdist_txt)))
+    return summary
 
 
 def benchmark_model(name, mesh, args, raw_dir):
@@ -258,20 +277,19 @@ def benchmark_model(name, mesh, args, raw_dir):
     result dict (medians of the repeated runs)."""
     result = dict.fromkeys(CSV_COLUMNS)
     result.update(model=name, source=args.source, repeats=args.repeats, errors=[])
-    gdist_distances = ours_distances = None
+    gdist_txt = ours_csv = None
     gdist_reports, ours_runs = [], []
 
     for turn in range(1, args.repeats + 1):
         try:
-            report, gdist_distances = run_gdist(mesh, args, raw_dir, name)
+            report, gdist_txt = run_gdist(mesh, args, raw_dir, name)
             gdist_reports.append(report)
             log(f"  [{turn}] gdist: {report['seconds_cpu']:.3f} s cpu, reached {report['reached']}/{report['vertices']}")
         except (RunError, ValueError, KeyError) as exc:
             result["errors"].append(f"gdist: {exc}")
             log(f"  [{turn}] gdist FAILED: {exc}")
         try:
-            vertex_count = gdist_reports[-1]["vertices"] if gdist_reports else None
-            wall, peak, ours_distances = run_ours_distance(mesh, args, raw_dir, name, vertex_count)
+            wall, peak, ours_csv = run_ours_distance(mesh, args, raw_dir, name)
             ours_runs.append((wall, peak))
             log(f"  [{turn}] ours distance: {wall:.3f} s wall, {peak / MIB:.1f} MiB")
         except RunError as exc:
@@ -294,11 +312,13 @@ def benchmark_model(name, mesh, args, raw_dir):
         result["gdist"] = last
     if ours_runs:
         result.update(
-            vertices=len(ours_distances),
             ours_distance_wall_seconds=median([wall for wall, _ in ours_runs]),
             ours_distance_peak_rss_bytes=median([peak for _, peak in ours_runs]),
-            ours_reached=sum(1 for d in ours_distances if math.isfinite(d)),
         )
+        try:
+            result.update(in_fresh_process(compare_outputs, ours_csv, gdist_txt, result["vertices"]))
+        except RunError as exc:
+            result["errors"].append(f"ours distance: {exc}")
 
     try:
         stats_path = raw_dir / f"{name}.ours-stats.json"
@@ -320,8 +340,6 @@ def benchmark_model(name, mesh, args, raw_dir):
         result["errors"].append(f"ours stats: {exc}")
         log(f"  ours stats FAILED: {exc}")
 
-    if gdist_distances is not None and ours_distances is not None:
-        result.update(compare(ours_distances, gdist_distances))
     if result["gdist_cpu_seconds"]:
         if result["ours_propagation_seconds"] is not None:
             result["ratio_ours_over_gdist"] = result["ours_propagation_seconds"] / result["gdist_cpu_seconds"]
@@ -381,6 +399,11 @@ def icosphere_mesh(level):
     return vertices, triangles
 
 
+def write_generated(kind, size, path):
+    """Write ``icosphere_mesh(size)`` or ``grid_mesh(size)`` to ``path``."""
+    write_obj(path, *(icosphere_mesh(size) if kind == "icosphere" else grid_mesh(size)))
+
+
 def generated_models(names, out_dir):
     """Write each generated mesh (``icosphere:L`` or ``grid:N``) as OBJ; map names to paths."""
     out_dir.mkdir(parents=True, exist_ok=True)
@@ -393,8 +416,7 @@ def generated_models(names, out_dir):
         path = out_dir / f"{stem}.obj"
         if not path.exists():
             log(f"writing {path}")
-            mesh = icosphere_mesh(int(size)) if kind == "icosphere" else grid_mesh(int(size))
-            write_obj(path, *mesh)
+            in_fresh_process(write_generated, kind, int(size), path)
         models[stem] = path
     return models
 
