@@ -3,7 +3,7 @@
 matrix against single-source `exact-geodesics distance` runs, bit for bit.
 
     python3 examples/benchmark/bench_matrix.py [--model stanford_bunny] [--vertices 200]
-        [--seed 1] [--threads 2] [--repeats 1] [--check-rows 4] [--out bench-results]
+        [--seed 1] [--threads 2] [--repeats 1] [--check-rows 4] [--binary PATH] [--out bench-results]
 
 Writes OUT/matrix_runs.{json,csv} (one row per run: threads, wall seconds, user and system CPU
 seconds, peak RSS), OUT/matrix_checks.{json,csv} (the rows checked) and
@@ -49,10 +49,10 @@ def read_npy(path):
     return rows, columns, values
 
 
-def single_source(mesh, vertex):
+def single_source(binary, mesh, vertex):
     """Distances of every vertex from `vertex`, by `exact-geodesics distance`."""
     out = subprocess.run(
-        [BIN, "distance", mesh, "--source", f"v:{vertex}"], capture_output=True, text=True, check=True
+        [binary, "distance", mesh, "--source", f"v:{vertex}"], capture_output=True, text=True, check=True
     ).stdout
     return [float(line.split(",")[1]) for line in out.splitlines()[1:]]
 
@@ -65,6 +65,7 @@ def main():
     parser.add_argument("--threads", type=int, default=2, help="threads of the parallel runs")
     parser.add_argument("--repeats", type=int, default=1, help="runs of each, taking turns")
     parser.add_argument("--check-rows", type=int, default=4, help="rows checked against single-source runs")
+    parser.add_argument("--binary", default=BIN, help="the exact-geodesics executable")
     parser.add_argument("--out", default=os.path.join(ROOT, "bench-results"))
     args = parser.parse_args()
     mesh = args.model if args.model.startswith("gen:") else os.path.join(MODELS, args.model + ".obj")
@@ -75,7 +76,7 @@ def main():
         for turn in range(args.repeats):
             for threads in (1, args.threads):
                 npy = os.path.join(tmp, f"matrix{threads}.npy")
-                cmd = [BIN, "matrix", mesh, "--random", str(args.vertices), "--seed", str(args.seed),
+                cmd = [args.binary, "matrix", mesh, "--random", str(args.vertices), "--seed", str(args.seed),
                        "--threads", str(threads), "--save-selection", selection, "--out", npy]
                 wall, user, system, rss = run_timed(cmd)
                 runs.append({"turn": turn, "threads": threads, "wall_seconds": wall, "user_seconds": user,
@@ -89,7 +90,7 @@ def main():
         checks = []
         n = one[0]
         for i in sorted({round(k * (n - 1) / max(1, args.check_rows - 1)) for k in range(args.check_rows)}):
-            reference = single_source(mesh, vertices[i])
+            reference = single_source(args.binary, mesh, vertices[i])
             row = one[2][i * n : (i + 1) * n]
             equal = all(struct.pack("<d", row[j]) == struct.pack("<d", reference[v]) for j, v in enumerate(vertices))
             checks.append({"row": i, "vertex": vertices[i], "equals_single_source": equal})
