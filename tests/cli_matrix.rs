@@ -1,6 +1,8 @@
 //! `exact-geodesics matrix`: the files it writes parse back (small readers below) and hold the
 //! distances that `exact-geodesics distance` gives from each source.
 
+// The command line is built with the `cli` feature only.
+#![cfg(feature = "cli")]
 mod common;
 
 use common::cli::{refuses, run, stdout, temp_file};
