@@ -26,5 +26,5 @@ pub use propagate::{
 };
 pub use source::{PointError, SurfacePoint};
 pub use stats::{Eq2Counts, Eq2Decision, Stats};
-pub use trace_back::{GeodesicPath, TraceError};
+pub use trace_back::{ExactPath, GeodesicPath, TraceError};
 pub use wedge::{PseudoSource, Wedge};

@@ -41,6 +41,19 @@ impl GeodesicPath {
     }
 }
 
+/// A shortest path with the backend's own numbers ([`GeodesicField::trace_back_exact`]).
+#[derive(Clone, Debug)]
+pub struct ExactPath<S> {
+    /// The path in `f64`, as [`GeodesicField::trace_back`] gives it.
+    pub path: GeodesicPath,
+    /// For each of `path.simplices`: where it is a point the walk found inside an edge, its
+    /// offset along the edge from the edge's `vertices[0]`, in the model's units; `None` for
+    /// vertices, the target and the source.
+    pub offsets: Vec<Option<S>>,
+    /// The target's distance.
+    pub distance: S,
+}
+
 /// Why a path could not be traced.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum TraceError {
@@ -95,29 +108,55 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// [`TraceError::Unreachable`] if no source reaches the target, [`TraceError::Point`] for an
     /// invalid target, [`TraceError::Lost`] if rounding sends the walk astray.
     pub fn trace_back(&self, target: &SurfacePoint) -> Result<GeodesicPath, TraceError> {
+        let (trail, distance, source) = self.trace(target)?;
+        Ok(self.path_of(trail.points, &distance, source))
+    }
+
+    /// [`GeodesicField::trace_back`] with the backend's own numbers: where the path crosses an
+    /// edge, its offset along the edge as the number type computed it (exactly, in the exact
+    /// backend), and the target's distance in the number type.
+    ///
+    /// # Errors
+    /// As [`GeodesicField::trace_back`].
+    pub fn trace_back_exact(&self, target: &SurfacePoint) -> Result<ExactPath<S>, TraceError> {
+        let (trail, distance, source) = self.trace(target)?;
+        let offsets = trail
+            .offsets
+            .iter()
+            .map(|x| x.as_ref().map(|x| self.to_model(x)))
+            .collect();
+        Ok(ExactPath {
+            path: self.path_of(trail.points, &distance, source),
+            offsets,
+            distance: self.to_model(&distance),
+        })
+    }
+
+    /// The path's trail, the target's distance (scaled units) and the source it ends at.
+    fn trace(&self, target: &SurfacePoint) -> Result<(Trail<S>, S, SourceId), TraceError> {
         let target = target.validated(self.mesh())?;
         let best = self.best_at(&target).ok_or(TraceError::Unreachable)?;
-        let distance = self.unfolding.to_model(best.distance.to_f64());
-        let mut simplices = vec![target];
+        let distance = best.distance;
+        let mut simplices = Trail::start(target);
         let mut via = best.via;
         let mut start = None;
         let budget = 4 * self.mesh().face_count() + 16;
         for _ in 0..budget {
             let pseudo_source = match via {
                 Via::Vertex(v) => {
-                    push_point(&mut simplices, SurfacePoint::Vertex(v));
+                    simplices.push(SurfacePoint::Vertex(v));
                     // The path ends at the vertex if it is a source; it may hop at no cost to a
                     // vertex at the same place (across edges of length zero): to a source, or
                     // else to whichever was reached through a face that is not degenerate.
                     let twins = self.twins(v);
-                    let hop = |simplices: &mut Vec<SurfacePoint>, mut at: usize| {
+                    let hop = |simplices: &mut Trail<S>, mut at: usize| {
                         let mut chain = Vec::new();
                         while let Some(parent) = twins[at].1 {
                             chain.push(twins[at].0);
                             at = parent;
                         }
                         for u in chain.into_iter().rev() {
-                            push_point(simplices, SurfacePoint::Vertex(u));
+                            simplices.push(SurfacePoint::Vertex(u));
                         }
                     };
                     if let Some((i, k)) = twins
@@ -126,7 +165,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                         .find_map(|(i, &(u, _))| self.source_at_vertex(u).map(|k| (i, k)))
                     {
                         hop(&mut simplices, i);
-                        return Ok(self.finish(simplices, distance, k));
+                        return Ok((simplices, distance, k));
                     }
                     let (i, arrival) = twins
                         .iter()
@@ -179,27 +218,27 @@ impl<S: Scalar> GeodesicField<'_, S> {
             };
             match pseudo_source {
                 PseudoSource::Source(k) => {
-                    push_point(&mut simplices, self.sources[k.index()]);
-                    return Ok(self.finish(simplices, distance, k));
+                    simplices.push(self.sources[k.index()]);
+                    return Ok((simplices, distance, k));
                 }
                 PseudoSource::Vertex(v) => via = Via::Vertex(v),
             }
         }
         Err(TraceError::Lost {
-            near: format!("{:?}", simplices.last()),
+            near: format!("{:?}", simplices.points.last()),
         })
     }
 
-    fn finish(
+    fn path_of(
         &self,
         simplices: Vec<SurfacePoint>,
-        distance: f64,
+        distance: &S,
         source: SourceId,
     ) -> GeodesicPath {
         GeodesicPath {
             points: simplices.iter().map(|p| p.position(self.mesh())).collect(),
             simplices,
-            distance,
+            distance: self.unfolding.to_model(distance.to_f64()),
             source,
         }
     }
@@ -335,7 +374,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         face: FaceId,
         at: Planar<S>,
         start: Option<VertexId>,
-        simplices: &mut Vec<SurfacePoint>,
+        simplices: &mut Trail<S>,
     ) -> Result<Step<S>, TraceError> {
         let w = &self.wedges.on(edge)[wedge];
         let e = self.mesh().edge(edge);
@@ -357,16 +396,13 @@ impl<S: Scalar> GeodesicField<'_, S> {
             // A point on the edge but named otherwise (a vertex in the middle of a degenerate
             // face, a point of a degenerate face) is also that point of the edge, which the
             // face the walk starts in has in its closure.
-            let named_on_edge = match simplices.last() {
+            let named_on_edge = match simplices.points.last() {
                 Some(SurfacePoint::Vertex(v)) => e.vertices.contains(v),
                 Some(SurfacePoint::Edge { edge: on, .. }) => *on == edge,
                 _ => false,
             };
             if !named_on_edge {
-                push_point(
-                    simplices,
-                    edge_point(edge, &at.x, self.unfolding.length(edge)),
-                );
+                simplices.push_edge(edge, &at.x, self.unfolding.length(edge));
             }
             return Ok(Step::Walk(Walk {
                 edge,
@@ -391,7 +427,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             return Ok(Step::Vertex(v));
         }
         let length = self.unfolding.length(edge);
-        push_point(simplices, edge_point(edge, &x, length));
+        simplices.push_edge(edge, &x, length);
         let beyond = wedge_face()?;
         Ok(Step::Walk(Walk {
             edge,
@@ -420,13 +456,13 @@ impl<S: Scalar> GeodesicField<'_, S> {
         &self,
         mut walk: Walk<S>,
         target: PseudoSource,
-        simplices: &mut Vec<SurfacePoint>,
+        simplices: &mut Trail<S>,
         budget: usize,
     ) -> Result<WalkEnd<S>, TraceError> {
         for _ in 0..budget {
             if let Some(points) = self.closure_path(walk.face, target) {
-                for point in points {
-                    push_point(simplices, point);
+                for (point, offset) in points {
+                    simplices.push_at(point, offset);
                 }
                 return Ok(WalkEnd::PseudoSource);
             }
@@ -488,10 +524,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             if let Some(v) = end {
                 return Ok(WalkEnd::Vertex(v));
             }
-            push_point(
-                simplices,
-                edge_point(next_edge, &position, self.unfolding.length(next_edge)),
-            );
+            simplices.push_edge(next_edge, &position, self.unfolding.length(next_edge));
             if self.mesh().side_count(next_edge) > 2 {
                 return Ok(WalkEnd::Edge {
                     edge: next_edge,
@@ -527,7 +560,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// face, or a point inside one of its edges (a vertex in the middle of a degenerate face).
     /// In the last case, the way on to a face of the pseudo-source's own (through the
     /// degenerate faces whose edges contain it, all at the same place) as edge points.
-    fn closure_path(&self, face: FaceId, target: PseudoSource) -> Option<Vec<SurfacePoint>> {
+    fn closure_path(&self, face: FaceId, target: PseudoSource) -> Option<Vec<TrailPoint<S>>> {
         let point = match target {
             PseudoSource::Vertex(v) => SurfacePoint::Vertex(v),
             PseudoSource::Source(k) => self.sources[k.index()],
@@ -552,16 +585,17 @@ impl<S: Scalar> GeodesicField<'_, S> {
         }
         let p = self.unfolding.position(self.mesh(), &point);
         // Breadth first over faces joined by edges that contain the point inside.
-        let mut reached: Vec<(FaceId, Option<(usize, SurfacePoint)>)> = vec![(face, None)];
+        // Each face reached, with the face it was reached from and the point crossed to it.
+        let mut reached: Vec<(FaceId, Option<Crossed<S>>)> = vec![(face, None)];
         let mut next = 0;
         while next < reached.len() {
             let (f, _) = reached[next];
             if own.contains(&f) {
                 let mut points = Vec::new();
                 let mut at = next;
-                while let (_, Some((parent, point))) = reached[at] {
-                    points.push(point);
-                    at = parent;
+                while let (_, Some((parent, point))) = &reached[at] {
+                    points.push(point.clone());
+                    at = *parent;
                 }
                 points.reverse();
                 return Some(points);
@@ -576,10 +610,13 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 if !self.unfolding.is_inside(g, &on) {
                     continue;
                 }
-                let here = edge_point(g, &on.x, self.unfolding.length(g));
+                let here = (
+                    edge_point(g, &on.x, self.unfolding.length(g)),
+                    Some(on.x.clone()),
+                );
                 for beyond in self.mesh().edge_faces(g) {
                     if reached.iter().all(|(r, _)| *r != beyond) {
-                        reached.push((beyond, Some((next, here))));
+                        reached.push((beyond, Some((next, here.clone()))));
                     }
                 }
             }
@@ -594,8 +631,41 @@ fn edge_point<S: Scalar>(edge: EdgeId, x: &S, length: &S) -> SurfacePoint {
     SurfacePoint::Edge { edge, t }
 }
 
-fn push_point(simplices: &mut Vec<SurfacePoint>, p: SurfacePoint) {
-    if simplices.last() != Some(&p) {
-        simplices.push(p);
+/// A point of a trail and, on an edge, its offset along the edge in the number type.
+type TrailPoint<S> = (SurfacePoint, Option<S>);
+
+/// A step of the search in `closure_path`: where it came from, and the point it crossed.
+type Crossed<S> = (usize, TrailPoint<S>);
+
+/// A path being traced: its points and, for each, its offset along its edge (scaled units) as
+/// the number type computed it, where it is a point inside an edge the walk crossed.
+struct Trail<S> {
+    points: Vec<SurfacePoint>,
+    offsets: Vec<Option<S>>,
+}
+
+impl<S: Scalar> Trail<S> {
+    fn start(target: SurfacePoint) -> Self {
+        Trail {
+            points: vec![target],
+            offsets: vec![None],
+        }
+    }
+
+    /// Appends a point, unless it repeats the last one.
+    fn push(&mut self, p: SurfacePoint) {
+        self.push_at(p, None);
+    }
+
+    /// Appends the point at `x` along `edge` (of length `length`).
+    fn push_edge(&mut self, edge: EdgeId, x: &S, length: &S) {
+        self.push_at(edge_point(edge, x, length), Some(x.clone()));
+    }
+
+    fn push_at(&mut self, p: SurfacePoint, offset: Option<S>) {
+        if self.points.last() != Some(&p) {
+            self.points.push(p);
+            self.offsets.push(offset);
+        }
     }
 }
