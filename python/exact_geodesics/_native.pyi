@@ -110,6 +110,11 @@ class GeodesicField:
     def exact_distance_at(self, point: Point, digits: int = 20) -> Optional[str]:
         """Certified decimal digits of the distance at a point (exact backend only)."""
     def path(self, target: Point) -> GeodesicPath: ...
+    def exact_path(
+        self, target: Point, digits: int = 20
+    ) -> Tuple[GeodesicPath, str, list[Optional[str]]]:
+        """The path, the target's distance and each edge crossing's offset, as certified
+        digits (exact backend only)."""
     def wedges(self, edge: Union[int, Tuple[int, int]]) -> list[dict[str, Any]]: ...
     def stats(self) -> dict[str, Any]: ...
 

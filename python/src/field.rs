@@ -199,22 +199,38 @@ impl GeodesicField {
     fn path(&self, py: Python<'_>, target: &Bound<'_, PyAny>) -> PyResult<GeodesicPath> {
         let target = input::surface_point(self.mesh(), target)?;
         self.query_cap()?;
-        let path = on_field!(&self.field, f => f.trace_back(&target)).map_err(|e| match e {
-            TraceError::Lost { .. } => PyRuntimeError::new_err(e.to_string()),
-            e => value_error(e),
-        })?;
-        let simplices = path
-            .simplices
+        let path = on_field!(&self.field, f => f.trace_back(&target)).map_err(trace_error)?;
+        path_to_python(py, &path)
+    }
+
+    /// The shortest path from ``target`` with certified digits (``exact`` backend only):
+    /// ``(path, distance, offsets)``, where ``distance`` is the target's distance and
+    /// ``offsets[i]``, for each of ``path.simplices`` that is a point the walk found inside an
+    /// edge, its offset along the edge from the edge's first vertex (``None`` elsewhere), as
+    /// strings of ``digits`` certified significant digits.
+    ///
+    /// Raises as ``path`` and as ``exact_distances``.
+    #[pyo3(signature = (target, digits = 20))]
+    fn exact_path(
+        &self,
+        py: Python<'_>,
+        target: &Bound<'_, PyAny>,
+        digits: u32,
+    ) -> PyResult<(GeodesicPath, String, Vec<Option<String>>)> {
+        let field = self.exact_field(digits)?;
+        let target = input::surface_point(self.mesh(), target)?;
+        let exact = field.trace_back_exact(&target).map_err(trace_error)?;
+        let offsets = exact
+            .offsets
             .iter()
-            .map(|p| input::simplex(py, p))
+            .map(|x| {
+                x.as_ref()
+                    .map(|x| certified_digits(x, digits, "an edge crossing"))
+                    .transpose()
+            })
             .collect::<PyResult<Vec<_>>>()?;
-        Ok(GeodesicPath {
-            points: rows_of_three(py, &path.points).unbind(),
-            simplices: PyList::new(py, simplices)?.unbind(),
-            distance: path.distance,
-            source: path.source.index(),
-            length: path.length(),
-        })
+        let distance = certified_digits(&exact.distance, digits, "the target")?;
+        Ok((path_to_python(py, &exact.path)?, distance, offsets))
     }
 
     /// The final wedges on an edge [LZT Definition 1], sorted along it from its first vertex
@@ -350,5 +366,29 @@ fn certified_digits(value: &Real, digits: u32, what: &str) -> PyResult<String> {
             "{what}: {digits} certified digits are out of reach (an uncertified decision, or \
              beyond the precision cap)"
         ))
+    })
+}
+
+/// A trace error as Python raises it: `RuntimeError` for a lost walk, `ValueError` otherwise.
+fn trace_error(e: TraceError) -> PyErr {
+    match e {
+        TraceError::Lost { .. } => PyRuntimeError::new_err(e.to_string()),
+        e => value_error(e),
+    }
+}
+
+/// A library path as the Python class.
+fn path_to_python(py: Python<'_>, path: &exact_geodesics::GeodesicPath) -> PyResult<GeodesicPath> {
+    let simplices = path
+        .simplices
+        .iter()
+        .map(|p| input::simplex(py, p))
+        .collect::<PyResult<Vec<_>>>()?;
+    Ok(GeodesicPath {
+        points: rows_of_three(py, &path.points).unbind(),
+        simplices: PyList::new(py, simplices)?.unbind(),
+        distance: path.distance,
+        source: path.source.index(),
+        length: path.length(),
     })
 }

@@ -311,3 +311,18 @@ def test_exact_values_are_refused_for_float_backends():
     exact = eg.GeodesicSolver(vertices, triangles, backend="exact").propagate(0)
     with pytest.raises(ValueError, match="digits"):
         exact.exact_distances(digits=0)
+
+
+def test_exact_path_crosses_the_cube_edge_at_one_half():
+    import decimal
+
+    vertices, triangles = eg.generate_mesh("cube")
+    field = eg.GeodesicSolver(vertices, triangles, backend="exact").propagate(0)
+    far = int(np.argmax(field.distances))
+    path, distance, offsets = field.exact_path(far, digits=30)
+    assert len(offsets) == len(path.simplices)
+    crossings = [o for o in offsets if o is not None]
+    # The diagonal of the unfolded 1 x 2 rectangle crosses the shared edge at its middle.
+    assert len(crossings) == 1 and decimal.Decimal(crossings[0]) == decimal.Decimal("0.5")
+    decimal.getcontext().prec = 50
+    assert abs(decimal.Decimal(distance) - decimal.Decimal(5).sqrt()) <= decimal.Decimal("1e-29")
