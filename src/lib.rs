@@ -43,9 +43,9 @@ pub mod subdivision;
 
 pub use mesh::{EdgeId, FaceId, MeshError, Side, SourceId, TriMesh, ValidationReport, VertexId};
 pub use mmp::{
-    geodesic_distances, propagate, propagate_shared, propagate_with_progress, GeodesicField,
-    GeodesicPath, PointError, PropagateOptions, PseudoSource, Stats, SurfacePoint, TraceError,
-    Wedge,
+    geodesic_distances, propagate, propagate_shared, propagate_with_progress, ExactPath,
+    GeodesicField, GeodesicPath, PointError, PropagateOptions, PseudoSource, Stats, SurfacePoint,
+    TraceError, Wedge,
 };
 pub use scalar::Scalar;
 

@@ -112,15 +112,8 @@ pub struct Common {
     /// Number type of the engine.
     #[arg(long, value_enum, default_value_t = Backend::F64)]
     pub backend: Backend,
-    /// Largest precision (bits) the exact backend tries before it records a decision as
-    /// uncertified.
-    #[arg(
-        long,
-        default_value_t = exact::DEFAULT_PRECISION_CAP,
-        value_parser = clap::value_parser!(u32)
-            .range(i64::from(exact::MIN_PRECISION_CAP)..=i64::from(exact::MAX_PRECISION_CAP))
-    )]
-    pub precision_cap: u32,
+    #[command(flatten)]
+    pub cap: PrecisionCap,
     /// Stop propagating at this distance; farther vertices are reported unreachable (inf).
     /// A non-negative number; `inf` is no limit.
     #[arg(long, allow_hyphen_values = true, value_parser = non_negative_distance)]
@@ -131,6 +124,29 @@ pub struct Common {
     /// instead of warning on stderr.
     #[arg(long)]
     pub require_certified: bool,
+}
+
+/// `--precision-cap`: the exact backend's precision cap.
+#[derive(Args)]
+pub struct PrecisionCap {
+    /// Largest precision (bits) the exact backend tries before it records a decision as
+    /// uncertified.
+    #[arg(
+        long,
+        default_value_t = exact::DEFAULT_PRECISION_CAP,
+        value_parser = clap::value_parser!(u32)
+            .range(i64::from(exact::MIN_PRECISION_CAP)..=i64::from(exact::MAX_PRECISION_CAP))
+    )]
+    pub precision_cap: u32,
+}
+
+/// Fails with `message` when the user asked for certified results, else warns with it.
+pub fn report_uncertified(message: String, require_certified: bool) -> Result<(), String> {
+    if require_certified {
+        return Err(message);
+    }
+    eprintln!("warning: {message}");
+    Ok(())
 }
 
 /// `--digits N`: significant digits of exact values (the exact backend only).
@@ -197,7 +213,7 @@ impl Common {
             sources,
             options: {
                 let mut options =
-                    PropagateOptions::default().with_precision_cap(self.precision_cap);
+                    PropagateOptions::default().with_precision_cap(self.cap.precision_cap);
                 options.max_distance = self.max_distance;
                 options
             },
@@ -227,10 +243,7 @@ impl Job {
                 counts.decisions,
                 self.backend.name()
             );
-            if self.require_certified {
-                return Err(message);
-            }
-            eprintln!("warning: {message}");
+            report_uncertified(message, self.require_certified)?;
         }
         Ok(field)
     }

@@ -2,13 +2,14 @@
 //! core, rows written as they come (`.npy` dense, `.mtx` sparse) or whole (`.csv`).
 
 use crate::matrix_files::{write_csv, Format, MtxFile, NpyFile};
-use crate::{load, non_negative_distance, progress, with_backend, Backend};
+use crate::{
+    load, non_negative_distance, progress, report_uncertified, with_backend, Backend, PrecisionCap,
+};
 use clap::{ArgGroup, Args, ValueEnum};
 use exact_geodesics::experiments::random_sources;
 use exact_geodesics::matrix::{
     distance_matrix, DenseMatrix, MatrixOptions, MatrixRow, MatrixSummary, SparseMatrix,
 };
-use exact_geodesics::scalar::exact;
 use exact_geodesics::{Scalar, SurfacePoint, TriMesh, VertexId};
 use std::path::PathBuf;
 
@@ -49,15 +50,8 @@ pub struct MatrixArgs {
     /// Number type of the engine.
     #[arg(long, value_enum, default_value_t = Backend::F64)]
     backend: Backend,
-    /// Largest precision (bits) the exact backend tries before it records a decision as
-    /// uncertified.
-    #[arg(
-        long,
-        default_value_t = exact::DEFAULT_PRECISION_CAP,
-        value_parser = clap::value_parser!(u32)
-            .range(i64::from(exact::MIN_PRECISION_CAP)..=i64::from(exact::MAX_PRECISION_CAP))
-    )]
-    precision_cap: u32,
+    #[command(flatten)]
+    cap: PrecisionCap,
     /// Make the matrix exactly symmetric (the rows are then gathered in memory first).
     #[arg(long, value_enum)]
     symmetrize: Option<Symmetrize>,
@@ -84,7 +78,7 @@ pub fn run(args: &MatrixArgs) -> Result<(), String> {
         let lines: String = vertices.iter().map(|v| format!("v:{}\n", v.0)).collect();
         std::fs::write(path, lines).map_err(|e| format!("{}: {e}", path.display()))?;
     }
-    let mut options = MatrixOptions::default().with_precision_cap(args.precision_cap);
+    let mut options = MatrixOptions::default().with_precision_cap(args.cap.precision_cap);
     options.max_distance = args.max_distance;
     options.threads = args.threads.map(|n| n as usize);
     let summary =
@@ -97,10 +91,7 @@ pub fn run(args: &MatrixArgs) -> Result<(), String> {
             summary.rows,
             args.backend.name()
         );
-        if args.require_certified {
-            return Err(message);
-        }
-        eprintln!("warning: {message}");
+        report_uncertified(message, args.require_certified)?;
     }
     Ok(())
 }

@@ -4,7 +4,7 @@
 mod observation3;
 mod plots;
 
-use crate::{load, progress, Backend};
+use crate::{load, progress, Backend, PrecisionCap};
 use clap::{Args, Subcommand};
 use exact_geodesics::experiments::{
     measure_in, normalize_to_unit_cube, random_sources, Measurement, ModelShape, Table1Row,
@@ -60,15 +60,8 @@ struct RunArgs {
     /// Seed of the source draw.
     #[arg(long, default_value_t = 1)]
     seed: u64,
-    /// Largest precision (bits) the exact backend tries before it records a decision as
-    /// uncertified.
-    #[arg(
-        long,
-        default_value_t = exact::DEFAULT_PRECISION_CAP,
-        value_parser = clap::value_parser!(u32)
-            .range(i64::from(exact::MIN_PRECISION_CAP)..=i64::from(exact::MAX_PRECISION_CAP))
-    )]
-    precision_cap: u32,
+    #[command(flatten)]
+    cap: PrecisionCap,
     #[command(flatten)]
     read: load::ReadArgs,
     /// Directory to write into (created if missing).
@@ -79,7 +72,7 @@ struct RunArgs {
 impl RunArgs {
     /// Sets the precision cap and creates the output directory.
     fn prepare(&self) -> Result<(), String> {
-        exact::set_precision_cap(self.precision_cap).map_err(|e| e.to_string())?;
+        exact::set_precision_cap(self.cap.precision_cap).map_err(|e| e.to_string())?;
         std::fs::create_dir_all(&self.out).map_err(|e| format!("{}: {e}", self.out.display()))
     }
 
