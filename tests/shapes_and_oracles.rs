@@ -185,18 +185,7 @@ fn edge_graph_dijkstra_on_known_meshes() {
     assert_close(d[6], 1.0 + 2f64.sqrt(), "cube edges 0-6");
     assert_close(d[2], 2f64.sqrt(), "cube edges 0-2");
     // Two unconnected triangles: the other is out of reach.
-    let two = TriMesh::new(
-        vec![
-            [0.0, 0.0, 0.0],
-            [1.0, 0.0, 0.0],
-            [0.0, 1.0, 0.0],
-            [5.0, 0.0, 0.0],
-            [6.0, 0.0, 0.0],
-            [5.0, 1.0, 0.0],
-        ],
-        vec![[0, 1, 2], [3, 4, 5]],
-    )
-    .expect("valid");
+    let two = common::two_triangles();
     let d = common::edge_graph_dijkstra(&two, 0);
     assert_eq!(d[0], 0.0);
     assert!(d[3..].iter().all(|x| x.is_infinite()));

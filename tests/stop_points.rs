@@ -133,18 +133,7 @@ fn exact_stop_at_a_cube_corner_is_certified() {
 #[test]
 fn unreachable_stop_point_lets_the_run_finish() {
     // Two disjoint triangles: vertex 4 cannot be reached from vertex 0.
-    let mesh = TriMesh::new(
-        vec![
-            [0.0, 0.0, 0.0],
-            [1.0, 0.0, 0.0],
-            [0.0, 1.0, 0.0],
-            [5.0, 0.0, 0.0],
-            [6.0, 0.0, 0.0],
-            [5.0, 1.0, 0.0],
-        ],
-        vec![[0, 1, 2], [3, 4, 5]],
-    )
-    .unwrap();
+    let mesh = common::two_triangles();
     let full = run::<f64>(&mesh, 0, &[]);
     let stopped = run::<f64>(&mesh, 0, &[vertex(1), vertex(4)]);
     assert!(!stopped.stats().stopped_at_stop_points);

@@ -361,12 +361,9 @@ impl GeodesicPath {
 
 /// `digits` certified decimal digits of `value`, or a `RuntimeError` naming `what`.
 fn certified_digits(value: &Real, digits: u32, what: &str) -> PyResult<String> {
-    value.to_decimal(digits).ok_or_else(|| {
-        PyRuntimeError::new_err(format!(
-            "{what}: {digits} certified digits are out of reach (an uncertified decision, or \
-             beyond the precision cap)"
-        ))
-    })
+    value
+        .certified_decimal(digits)
+        .map_err(|e| PyRuntimeError::new_err(format!("{what}: {e}")))
 }
 
 /// A trace error as Python raises it: `RuntimeError` for a lost walk, `ValueError` otherwise.

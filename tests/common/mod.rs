@@ -254,3 +254,19 @@ pub fn random_face_point(mesh: &TriMesh, rng: &mut SplitMix64) -> SurfacePoint {
         bary: [1.0 - u - v, u, v],
     }
 }
+
+/// Two unit right triangles apart: vertices 3 to 5 are unreachable from 0 to 2.
+pub fn two_triangles() -> TriMesh {
+    TriMesh::new(
+        vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [5.0, 0.0, 0.0],
+            [6.0, 0.0, 0.0],
+            [5.0, 1.0, 0.0],
+        ],
+        vec![[0, 1, 2], [3, 4, 5]],
+    )
+    .expect("a usable mesh")
+}

@@ -175,12 +175,9 @@ impl Digits {
 
 /// An exact distance in `digits` significant digits, or an error naming what it is of.
 pub fn certified_digits(value: &exact::Real, digits: u32, what: &str) -> Result<String, String> {
-    value.to_decimal(digits).ok_or_else(|| {
-        format!(
-            "{what}: {digits} certified digits are out of reach (an uncertified decision, or \
-             beyond --precision-cap)"
-        )
-    })
+    value
+        .certified_decimal(digits)
+        .map_err(|e| format!("{what}: {e} (see --precision-cap)"))
 }
 
 /// Parses `--max-distance`: a number that is not negative (`inf` allowed, NaN not).

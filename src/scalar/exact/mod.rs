@@ -108,6 +108,17 @@ pub fn precision_cap() -> u32 {
 #[derive(Clone)]
 pub struct Real(Arc<Node>);
 
+/// Why [`Real::certified_decimal`] gives no digits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "{digits} certified digits are out of reach (an uncertified decision, or beyond the \
+     precision cap)"
+)]
+pub struct DigitsOutOfReach {
+    /// The digits asked for.
+    pub digits: u32,
+}
+
 impl Real {
     /// The exact value of a rational.
     pub fn from_rational(r: Rational) -> Real {
@@ -227,6 +238,14 @@ impl Real {
             }
             precision = precision.saturating_mul(2).min(cap);
         }
+    }
+
+    /// [`Real::to_decimal`], with the reason when the digits are out of reach.
+    ///
+    /// # Errors
+    /// [`DigitsOutOfReach`] where `to_decimal` gives `None`.
+    pub fn certified_decimal(&self, digits: u32) -> Result<String, DigitsOutOfReach> {
+        self.to_decimal(digits).ok_or(DigitsOutOfReach { digits })
     }
 
     /// Whether the value is shown positive by refinement alone (no zero certificate), within
