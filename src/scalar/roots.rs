@@ -19,6 +19,13 @@ use super::{BisectorRoots, Eq2Coefficients, Field, Ring, Sign, SourceDistance};
 /// too coarse for it); an exact type always answers.
 pub(crate) trait CertifiedSign: Ring {
     fn certified_sign(&self) -> Option<Sign>;
+
+    /// The sign where it is clear without a proof of zero (a filter, or refinement that moves
+    /// the value away from zero), else `None`; a type that always answers may still say `None`
+    /// here, so that a sign near zero can be avoided where the answer does not need it.
+    fn clear_sign(&self) -> Option<Sign> {
+        self.certified_sign()
+    }
 }
 
 /// Which solutions of eq. (1) lie strictly inside a shared range.
@@ -135,6 +142,41 @@ fn negate(s: Sign) -> Sign {
         Sign::Negative => Sign::Positive,
         Sign::Zero => Sign::Zero,
         Sign::Positive => Sign::Negative,
+    }
+}
+
+/// Where the roots of eq. (2)'s `P` lie, told by the range's ends alone: `P`'s signs there and
+/// its slopes there. A quadratic monotone on the range (its slope of one sign at both ends) has
+/// no root inside if its signs at the ends agree, and exactly one if they differ (then two
+/// distinct real roots). This needs no discriminant, which is zero (and so beyond a filter)
+/// wherever one distance function touches the other, even far outside the range.
+enum RootsByEnds {
+    NoneInside,
+    OneInside,
+}
+
+impl RootsByEnds {
+    /// Placed from signs that are clear ([`CertifiedSign::clear_sign`]) at the ends of
+    /// `[0, width]`; `None` if one is not, if `P` is known to vanish at an end (`ties`), or if
+    /// `P` is not monotone on the range.
+    fn of<T: CertifiedSign>(eq2: &Eq2Coefficients<T>, width: &T, ties: [bool; 2]) -> Option<Self> {
+        if ties[0] || ties[1] {
+            return None;
+        }
+        let two = T::from_f64(2.0);
+        let slope_lo = eq2.b.clear_sign()?;
+        let slope_hi = (two * &eq2.a * width + &eq2.b).clear_sign()?;
+        if slope_lo == Sign::Zero || slope_lo != slope_hi {
+            return None;
+        }
+        let at_lo = eq2.c.clear_sign()?;
+        let at_hi =
+            (eq2.a.clone() * width * width + &(eq2.b.clone() * width) + &eq2.c).clear_sign()?;
+        match (at_lo, at_hi) {
+            (Sign::Zero, _) | (_, Sign::Zero) => None,
+            (lo, hi) if lo == hi => Some(RootsByEnds::NoneInside),
+            _ => Some(RootsByEnds::OneInside),
+        }
     }
 }
 
@@ -283,9 +325,23 @@ pub(crate) fn crossings<T: CertifiedSign>(
     // B^2 - 4AC = beta^2 G G' (the source gaps), beta != 0 here. The gap with s2 on s1's side
     // of the line is the smaller (they differ by 4 |y1 y2|): if it is positive, so is the other.
     let opposite = a.y.certified_sign()?.times(b.y.certified_sign()?) == Sign::Negative;
-    let disc = match gap(opposite)? {
-        Sign::Negative => negate(gap(!opposite)?),
-        near => near,
+    let discriminant = |gap: &dyn Fn(bool) -> Option<Sign>| {
+        Some(match gap(opposite)? {
+            Sign::Negative => negate(gap(!opposite)?),
+            near => near,
+        })
+    };
+    let clear_gap = |mirror| source_gap(a, b, mirror).clear_sign();
+    // A zero gap is a tangency the algorithm itself makes: a vertex's wedges touch, along its
+    // shadow line, the wedges of the image that lit it. Where the gap is not clear, the ends of
+    // the range may still place the roots without it (`RootsByEnds`).
+    let disc = match discriminant(&clear_gap) {
+        Some(disc) => disc,
+        None => match RootsByEnds::of(&eq2, &width, ties) {
+            Some(RootsByEnds::NoneInside) => return Some(Crossings::None),
+            Some(RootsByEnds::OneInside) => Sign::Positive,
+            None => discriminant(&gap)?,
+        },
     };
     match disc {
         Sign::Negative => return Some(Crossings::None),

@@ -53,6 +53,11 @@ pub const DEFAULT_PRECISION_CAP: u32 = 8192;
 /// The first precision of the exact stage, in bits.
 const FIRST_PRECISION: u32 = 128;
 
+/// The precision, in bits, up to which a sign is sought without a proof of zero where the
+/// engine can do without it ([`CertifiedSign::clear_sign`]) and before a square root's radicand
+/// is taken as positive by the normal form.
+const CLEAR_PRECISION: u32 = 1024;
+
 /// The smallest precision cap, in bits: the exact stage starts at this precision.
 pub const MIN_PRECISION_CAP: u32 = FIRST_PRECISION;
 
@@ -249,20 +254,46 @@ impl Real {
     }
 
     /// Whether the value is shown positive by refinement alone (no zero certificate), within
-    /// a modest precision.
+    /// [`CLEAR_PRECISION`] bits.
     fn positive_without_zero_test(&self) -> bool {
+        self.refined_away_from_zero() == Some(Sign::Positive)
+    }
+
+    /// The sign if refinement within [`CLEAR_PRECISION`] bits moves the enclosure off zero.
+    fn refined_away_from_zero(&self) -> Option<Sign> {
         let mut precision = FIRST_PRECISION;
-        while precision <= 1024 {
+        while precision <= CLEAR_PRECISION {
             let (lo, hi) = refine::enclosure(&self.0, precision);
             if lo.cmp0() == Some(Ordering::Greater) {
-                return true;
+                return Some(Sign::Positive);
             }
             if hi.cmp0() == Some(Ordering::Less) {
-                return false;
+                return Some(Sign::Negative);
             }
             precision *= 2;
         }
-        false
+        None
+    }
+
+    /// The sign and its certificate where it is clear without a search for a proof of zero:
+    /// divisors checked, then a structural zero, the filter, a rational value, or refinement
+    /// within [`CLEAR_PRECISION`] bits. `None` otherwise (the value may be zero).
+    fn clear_certified_sign(&self) -> Option<(Sign, Certificate)> {
+        let node = &self.0;
+        if check_divisors(node).is_err() {
+            return None;
+        }
+        if node.structural_zero {
+            return Some((Sign::Zero, Certificate::CertifiedZero(ZeroProof::Structure)));
+        }
+        if let Some(s) = node.filter.sign() {
+            return Some((s, Certificate::Filter));
+        }
+        if !node.has_sqrt {
+            return Some(self.certified_sign());
+        }
+        self.refined_away_from_zero()
+            .map(|s| (s, Certificate::Refinement))
     }
 
     /// An `f64` enclosure of the value (from the filter, or refined when the filter is wide).
@@ -410,6 +441,14 @@ impl Field for Real {
 impl CertifiedSign for Real {
     fn certified_sign(&self) -> Option<Sign> {
         Some(self.decide())
+    }
+
+    /// Counted as a decision when it answers; a value it cannot move away from zero (within
+    /// [`CLEAR_PRECISION`] bits) is left undecided and uncounted.
+    fn clear_sign(&self) -> Option<Sign> {
+        let (sign, certificate) = self.clear_certified_sign()?;
+        audit::record(certificate, || self.enclosure());
+        Some(sign)
     }
 }
 
