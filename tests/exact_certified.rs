@@ -96,16 +96,21 @@ fn random_terrain(n: u32, seed: u64) -> TriMesh {
     TriMesh::new(positions, faces).expect("a terrain is a mesh")
 }
 
-/// Where a vertex acts as a pseudo-source, its wedges touch those of the image that lit it
-/// along its shadow line: a zero of eq. (2)'s discriminant that no refinement can certify. It
-/// must not be asked where the range's ends already place the roots. (Each of these runs left
-/// 2 to 39 decisions uncertified before; other sources on the same terrains still leave some,
-/// where two wedges' range ends fall on one line: issue 11.)
+/// Two identities of saddle vertices, each once left to arithmetic that cannot settle it:
+/// - a vertex acting as a pseudo-source touches, along its shadow line, the wedges of the image
+///   that lit it: a zero of eq. (2)'s discriminant, which must not be asked where the range's
+///   ends already place the roots;
+/// - a lit wedge whose range ends on that shadow line keeps the vertex as the anchor of that end,
+///   also when a newer wedge wins in its middle and it keeps two pieces, so that the rays of both
+///   families through the end are one line.
+///
+/// Before, each of these 32 runs left 1 to 47 decisions uncertified.
 #[test]
-fn a_random_terrain_with_saddles_is_certified_and_agrees_with_f64() {
-    for (seed, source) in [(1, 40), (2, 17), (2, 80), (3, 17), (4, 0), (6, 80), (7, 0)] {
+fn random_terrains_with_saddles_are_certified_and_agree_with_f64() {
+    let runs = (1..=8).flat_map(|seed| [0, 17, 40, 80].map(|source| (seed, source)));
+    for (seed, v) in runs {
         let mesh = random_terrain(8, seed);
-        let source = [SurfacePoint::Vertex(VertexId(source))];
+        let source = [SurfacePoint::Vertex(VertexId(v))];
         let options = PropagateOptions::default();
         let exact = propagate::<Real>(&mesh, &source, &options).expect("a vertex source");
         let stats = exact.stats();
@@ -113,18 +118,18 @@ fn a_random_terrain_with_saddles_is_certified_and_agrees_with_f64() {
         assert_eq!(
             stats.backend.uncertified,
             0,
-            "seed {seed}: {:?}",
+            "seed {seed}, source v{v}: {:?}",
             stats.backend.uncertified_sites.first()
         );
         let float = propagate::<f64>(&mesh, &source, &options).expect("a vertex source");
-        for v in 0..mesh.vertex_count() as u32 {
+        for u in 0..mesh.vertex_count() as u32 {
             let (d, e) = (
-                float.vertex_distance(VertexId(v)),
-                exact.vertex_distance(VertexId(v)),
+                float.vertex_distance(VertexId(u)),
+                exact.vertex_distance(VertexId(u)),
             );
             assert!(
                 (d - e).abs() <= 1e-12 * e.max(1.0),
-                "seed {seed}, v{v}: f64 {d} against exact {e}"
+                "seed {seed}, source v{v}: f64 {d} against exact {e} at v{u}"
             );
         }
     }

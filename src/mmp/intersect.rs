@@ -396,6 +396,19 @@ impl<S: Scalar> Engine<'_, S> {
                 w.b1.compare(hi) == Ordering::Equal,
             ]
         };
+        // A wedge that keeps two pieces (the new one won in its middle) is trimmed in place for
+        // the first: the second is cut from the wedge as it was, with the anchor of its end.
+        let split: Vec<(u32, Wedge<S>, Provenance<S>)> = pieces
+            .iter()
+            .enumerate()
+            .filter_map(|(i, p)| match p.owner {
+                Owner::Old(id) if pieces[i + 1..].iter().any(|q| q.owner == p.owner) => {
+                    let slot = &self.slots[id as usize];
+                    Some((id, slot.wedge.clone(), slot.kept.clone()))
+                }
+                _ => None,
+            })
+            .collect();
         for piece in pieces.drain(..) {
             if !S::has_extent(&piece.lo, &piece.hi, length) {
                 continue;
@@ -424,24 +437,29 @@ impl<S: Scalar> Engine<'_, S> {
                 }
                 Owner::Old(id) => {
                     let slot = &self.slots[id as usize];
-                    let kept_ends = keeps(&slot.wedge, &piece.lo, &piece.hi);
+                    let (original, original_kept) = split
+                        .iter()
+                        .find(|(i, ..)| *i == id)
+                        .map_or((&slot.wedge, &slot.kept), |(_, w, k)| (w, k));
+                    let kept_ends = keeps(original, &piece.lo, &piece.hi);
                     let unchanged = kept_ends == [true, true];
                     let state = slot.state;
                     let target = if reused.contains(&id) {
-                        let mut wedge = slot.wedge.clone();
+                        let mut wedge = original.clone();
                         wedge.b0 = piece.lo;
                         wedge.b1 = piece.hi;
-                        let kept = slot.kept.trimmed(kept_ends);
+                        let kept = original_kept.trimmed(kept_ends);
                         self.allocate(wedge, kept, state)
                     } else {
                         reused.push(id);
                         if !unchanged {
                             // A trimmed wedge keeps its queue event: trimming only raises its
                             // key, and the event is re-queued with the new key when it pops.
+                            let kept = original_kept.trimmed(kept_ends);
                             let slot = &mut self.slots[id as usize];
                             slot.wedge.b0 = piece.lo;
                             slot.wedge.b1 = piece.hi;
-                            slot.kept = slot.kept.trimmed(kept_ends);
+                            slot.kept = kept;
                         }
                         id
                     };
