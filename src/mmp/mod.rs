@@ -6,6 +6,7 @@
 mod coverage;
 mod edge_wedges;
 mod field;
+mod front;
 mod intersect;
 mod propagate;
 mod provenance;
@@ -16,6 +17,7 @@ mod stop;
 mod trace_back;
 mod unfold;
 mod wedge;
+mod wedge_lists;
 
 pub use coverage::{CoverageIssue, CoverageReport};
 pub use field::GeodesicField;
