@@ -7,9 +7,9 @@
 //! non-overlapping wedges (Property 2), splitting an existing wedge in two where the new one
 //! wins only in its middle (Fig. 8c, Fig. 10).
 
+use super::planar::Planar;
 use super::provenance::{Anchor, Provenance};
 use super::stats::{Eq2Counts, Eq2Decision};
-use super::unfold::Planar;
 use super::wedge::{PseudoSource, Wedge};
 use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Scalar, SourceDistance};
 use std::cmp::Ordering;

@@ -8,6 +8,7 @@ mod edge_wedges;
 mod field;
 mod front;
 mod intersect;
+mod planar;
 mod propagate;
 mod provenance;
 mod query;

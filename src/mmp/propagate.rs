@@ -6,11 +6,12 @@
 
 use super::field::GeodesicField;
 use super::front::{EventKind, Front};
+use super::planar::Planar;
 use super::provenance::{Anchor, Provenance};
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::stop::StopPoints;
-use super::unfold::{FaceLayout, Planar, Unfolding};
+use super::unfold::{FaceLayout, Unfolding};
 use super::wedge::{PseudoSource, Wedge};
 use super::wedge_lists::{Arrivals, Due, WedgeLists};
 use crate::mesh::{EdgeId, FaceId, Side, SourceId, TriMesh, VertexId};
