@@ -6,6 +6,9 @@
 //! the existing wedge (Section 4, step 2.3.2). The result covers the union of the ranges with
 //! non-overlapping wedges (Property 2), splitting an existing wedge in two where the new one
 //! wins only in its middle (Fig. 8c, Fig. 10).
+//!
+//! Pure functions on wedges: they cut the edge into pieces and name each piece's owner; the
+//! engine's edge lists ([`wedge_lists`](super::wedge_lists)) store the pieces as wedges.
 
 use super::planar::Planar;
 use super::provenance::{Anchor, Provenance};
