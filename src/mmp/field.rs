@@ -1,7 +1,7 @@
 //! The result of a propagation: the final wedges on every edge and the vertex distances.
 
 use super::edge_wedges::EdgeWedges;
-use super::propagate::VertexDistance;
+use super::front::VertexDistance;
 use super::source::SurfacePoint;
 use super::stats::Stats;
 use super::unfold::Unfolding;

@@ -6,26 +6,30 @@
 //! the existing wedge (Section 4, step 2.3.2). The result covers the union of the ranges with
 //! non-overlapping wedges (Property 2), splitting an existing wedge in two where the new one
 //! wins only in its middle (Fig. 8c, Fig. 10).
+//!
+//! Pure functions on wedges: they cut the edge into pieces and name each piece's owner; the
+//! engine's edge lists ([`wedge_lists`](super::wedge_lists)) store the pieces as wedges.
 
-use super::propagate::{Engine, Slot, SlotState};
+use super::planar::Planar;
 use super::provenance::{Anchor, Provenance};
 use super::stats::{Eq2Counts, Eq2Decision};
-use super::unfold::Planar;
 use super::wedge::{PseudoSource, Wedge};
-use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Scalar, Site, SourceDistance};
+use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Scalar, SourceDistance};
 use std::cmp::Ordering;
 
-/// Who owns a piece of the edge after an intersection.
+/// Who owns a piece of the edge after an intersection: the arriving wedge, or the existing
+/// wedge of that id.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Owner {
+pub(crate) enum Owner {
     New,
     Old(u32),
 }
 
+/// A stretch `[lo, hi]` of the edge and the wedge that owns it.
 pub(crate) struct Piece<S> {
-    lo: S,
-    hi: S,
-    owner: Owner,
+    pub(crate) lo: S,
+    pub(crate) hi: S,
+    pub(crate) owner: Owner,
 }
 
 fn push_piece<S: Scalar>(pieces: &mut Vec<Piece<S>>, lo: S, hi: S, owner: Owner) {
@@ -36,23 +40,6 @@ fn push_piece<S: Scalar>(pieces: &mut Vec<Piece<S>>, lo: S, hi: S, owner: Owner)
         }
     }
     pieces.push(Piece { lo, hi, owner });
-}
-
-/// Reusable buffers of the intersection, kept across insertions to avoid allocating.
-pub(crate) struct Scratch<S> {
-    pieces: Vec<Piece<S>>,
-    reused: Vec<u32>,
-    ids: Vec<u32>,
-}
-
-impl<S> Default for Scratch<S> {
-    fn default() -> Self {
-        Scratch {
-            pieces: Vec::new(),
-            reused: Vec::new(),
-            ids: Vec::new(),
-        }
-    }
 }
 
 /// The smallest value of a distance function on `[lo, hi]` (it is convex, so the foot of the
@@ -183,7 +170,7 @@ fn lower_by_anchor<S: Scalar>(
 /// Cuts the union of the new wedge's range and the ranges of the wedges it overlaps (sorted,
 /// disjoint, each with an id and what it keeps of its construction) into pieces, each owned by
 /// the better wedge there.
-fn cut_into_pieces<'a, S: Scalar>(
+pub(crate) fn cut_into_pieces<'a, S: Scalar>(
     counts: &mut Eq2Counts,
     mut log: Option<&mut Vec<Eq2Decision>>,
     pieces: &mut Vec<Piece<S>>,
@@ -323,189 +310,4 @@ pub fn intersect<S: Scalar>(
             .cloned(),
     );
     (result, counts)
-}
-
-impl<S: Scalar> Engine<'_, S> {
-    /// Inserts a wedge on its edge, intersecting it with the wedges there.
-    pub(crate) fn insert(&mut self, w: Wedge<S>, kept: Provenance<S>) {
-        let e = w.edge;
-        S::locate(Site {
-            edge: Some(e.0),
-            what: "wedge intersection (eq. 2)",
-        });
-        let length = self.unfolding.length(e).clone();
-        if !S::has_extent(&w.b0, &w.b1, &length) {
-            return;
-        }
-        let list = &self.lists[e.index()];
-        let first = list.partition_point(|&id| {
-            self.slots[id as usize].wedge.b1.compare(&w.b0) != Ordering::Greater
-        });
-        let end = first
-            + list[first..]
-                .iter()
-                .take_while(|&&id| {
-                    self.slots[id as usize].wedge.b0.compare(&w.b1) == Ordering::Less
-                })
-                .count();
-        let mut pieces = std::mem::take(&mut self.scratch.pieces);
-        pieces.clear();
-        let log = self.record_decisions.then_some(&mut self.stats.decisions);
-        let overlapping = self.lists[e.index()][first..end].iter().map(|&id| {
-            let slot = &self.slots[id as usize];
-            (id, &slot.wedge, &slot.kept)
-        });
-        let new = (&w, &kept);
-        cut_into_pieces(
-            &mut self.stats.eq2,
-            log,
-            &mut pieces,
-            overlapping,
-            new,
-            &length,
-        );
-        if pieces.iter().any(|p| p.owner == Owner::New) {
-            self.rebuild(&w, &kept, first, end, &mut pieces, &length);
-        }
-        self.scratch.pieces = pieces;
-    }
-
-    /// Replaces the wedges `first..end` of the new wedge's edge list by the pieces.
-    fn rebuild(
-        &mut self,
-        w: &Wedge<S>,
-        kept: &Provenance<S>,
-        first: usize,
-        end: usize,
-        pieces: &mut Vec<Piece<S>>,
-        length: &S,
-    ) {
-        let e = w.edge;
-        let mut reused = std::mem::take(&mut self.scratch.reused);
-        let mut ids = std::mem::take(&mut self.scratch.ids);
-        reused.clear();
-        ids.clear();
-        let [v0, v1] = self.mesh.edge(e).vertices;
-        let zero = S::zero();
-        let mine = w.distance_function();
-        // Which range ends of a wedge a piece keeps (asked only where anchors depend on it).
-        let anchored = |k: &Provenance<S>| k.anchor(0).is_some() || k.anchor(1).is_some();
-        let keeps = |w: &Wedge<S>, lo: &S, hi: &S| {
-            [
-                w.b0.compare(lo) == Ordering::Equal,
-                w.b1.compare(hi) == Ordering::Equal,
-            ]
-        };
-        // A wedge that keeps two pieces (the new one won in its middle) is trimmed in place for
-        // the first: the second is cut from the wedge as it was, with the anchor of its end.
-        let split: Vec<(u32, Wedge<S>, Provenance<S>)> = pieces
-            .iter()
-            .enumerate()
-            .filter_map(|(i, p)| match p.owner {
-                Owner::Old(id) if pieces[i + 1..].iter().any(|q| q.owner == p.owner) => {
-                    let slot = &self.slots[id as usize];
-                    Some((id, slot.wedge.clone(), slot.kept.clone()))
-                }
-                _ => None,
-            })
-            .collect();
-        for piece in pieces.drain(..) {
-            if !S::has_extent(&piece.lo, &piece.hi, length) {
-                continue;
-            }
-            match piece.owner {
-                Owner::New => {
-                    if S::within(&zero, &piece.lo, &piece.hi, length) {
-                        let d = S::kept(&kept.at_ends[0]).unwrap_or_else(|| mine.at(&zero));
-                        self.offer_vertex(v0, d, w);
-                    }
-                    if S::within(length, &piece.lo, &piece.hi, length) {
-                        let d = S::kept(&kept.at_ends[1]).unwrap_or_else(|| mine.at(length));
-                        self.offer_vertex(v1, d, w);
-                    }
-                    let piece_kept = if anchored(kept) {
-                        kept.trimmed(keeps(w, &piece.lo, &piece.hi))
-                    } else {
-                        kept.clone()
-                    };
-                    let mut wedge = w.clone();
-                    wedge.b0 = piece.lo;
-                    wedge.b1 = piece.hi;
-                    let id = self.allocate(wedge, piece_kept, SlotState::Queued);
-                    self.push_wedge_event(id);
-                    ids.push(id);
-                }
-                Owner::Old(id) => {
-                    let slot = &self.slots[id as usize];
-                    let (original, original_kept) = split
-                        .iter()
-                        .find(|(i, ..)| *i == id)
-                        .map_or((&slot.wedge, &slot.kept), |(_, w, k)| (w, k));
-                    let kept_ends = keeps(original, &piece.lo, &piece.hi);
-                    let unchanged = kept_ends == [true, true];
-                    let state = slot.state;
-                    let target = if reused.contains(&id) {
-                        let mut wedge = original.clone();
-                        wedge.b0 = piece.lo;
-                        wedge.b1 = piece.hi;
-                        let kept = original_kept.trimmed(kept_ends);
-                        self.allocate(wedge, kept, state)
-                    } else {
-                        reused.push(id);
-                        if !unchanged {
-                            // A trimmed wedge keeps its queue event: trimming only raises its
-                            // key, and the event is re-queued with the new key when it pops.
-                            let kept = original_kept.trimmed(kept_ends);
-                            let slot = &mut self.slots[id as usize];
-                            slot.wedge.b0 = piece.lo;
-                            slot.wedge.b1 = piece.hi;
-                            slot.kept = kept;
-                        }
-                        id
-                    };
-                    if state == SlotState::Queued && target != id {
-                        self.push_wedge_event(target);
-                    }
-                    ids.push(target);
-                }
-            }
-        }
-        for i in first..end {
-            let id = self.lists[e.index()][i];
-            if !reused.contains(&id) {
-                let slot = &mut self.slots[id as usize];
-                slot.state = SlotState::Free;
-                slot.generation = slot.generation.wrapping_add(1);
-                self.free.push(id);
-            }
-        }
-        self.list_entries = self.list_entries + ids.len() - (end - first);
-        self.lists[e.index()].splice(first..end, ids.drain(..));
-        let bytes = self.slots.len() * std::mem::size_of::<Slot<S>>()
-            + self.list_entries * std::mem::size_of::<u32>()
-            + self.lists.len() * std::mem::size_of::<Vec<u32>>();
-        self.stats.peak_wedge_bytes = self.stats.peak_wedge_bytes.max(bytes);
-        self.scratch.reused = reused;
-        self.scratch.ids = ids;
-    }
-
-    fn allocate(&mut self, wedge: Wedge<S>, kept: Provenance<S>, state: SlotState) -> u32 {
-        self.stats.wedges_created += 1;
-        if let Some(id) = self.free.pop() {
-            let slot = &mut self.slots[id as usize];
-            slot.wedge = wedge;
-            slot.kept = kept;
-            slot.state = state;
-            slot.generation = slot.generation.wrapping_add(1);
-            id
-        } else {
-            self.slots.push(Slot {
-                wedge,
-                kept,
-                state,
-                generation: 0,
-            });
-            (self.slots.len() - 1) as u32
-        }
-    }
 }

@@ -6,7 +6,9 @@
 mod coverage;
 mod edge_wedges;
 mod field;
+mod front;
 mod intersect;
+mod planar;
 mod propagate;
 mod provenance;
 mod query;
@@ -16,6 +18,7 @@ mod stop;
 mod trace_back;
 mod unfold;
 mod wedge;
+mod wedge_lists;
 
 pub use coverage::{CoverageIssue, CoverageReport};
 pub use field::GeodesicField;

@@ -1,19 +1,22 @@
-//! Continuous Dijkstra over wedges [SSK+05 §4, LZT §2]: a priority queue of wedges ordered by
-//! the smallest distance each gives, and of vertices waiting to act as pseudo-sources.
+//! Continuous Dijkstra over wedges [SSK+05 §4, LZT §2]: the options and entry points of a
+//! propagation, and the engine that emits the wedges of sources and pseudo-sources and
+//! propagates each wedge across the face beyond its edge. The queue and the vertices' distances
+//! are the [`front`](super::front); the wedges on the edges, intersected as they arrive, are the
+//! [`wedge_lists`](super::wedge_lists).
 
-use super::edge_wedges::EdgeWedges;
 use super::field::GeodesicField;
-use super::intersect::Scratch;
+use super::front::{EventKind, Front};
+use super::planar::Planar;
 use super::provenance::{Anchor, Provenance};
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::stop::StopPoints;
-use super::unfold::{FaceLayout, Planar, Unfolding};
+use super::unfold::{FaceLayout, Unfolding};
 use super::wedge::{PseudoSource, Wedge};
+use super::wedge_lists::{Arrivals, Due, WedgeLists};
 use crate::mesh::{EdgeId, FaceId, Side, SourceId, TriMesh, VertexId};
 use crate::scalar::{Scalar, Sign, Site};
 use std::cmp::Ordering;
-use std::collections::BinaryHeap;
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -209,77 +212,36 @@ pub fn propagate_with_progress<'m, S: Scalar>(
 /// pseudo-source there, and what it keeps of its construction.
 type Child<S> = (EdgeId, [S; 2], Planar<S>, Provenance<S>);
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum SlotState {
-    Queued,
-    Propagated,
-    Free,
-}
-
-#[derive(Clone, Debug)]
-pub(crate) struct Slot<S: Scalar> {
-    pub(crate) wedge: Wedge<S>,
-    pub(crate) kept: Provenance<S>,
-    pub(crate) state: SlotState,
-    pub(crate) generation: u32,
-}
-
-/// The best known distance of a vertex: an upper bound during propagation, final after it.
-#[derive(Clone, Debug)]
-pub(crate) struct VertexDistance<S> {
-    pub(crate) distance: S,
-    pub(crate) approx: f64,
-    pub(crate) source: SourceId,
-}
-
-#[derive(Clone, Copy, Debug)]
-enum EventKind {
-    Wedge { slot: u32, generation: u32 },
-    Vertex(VertexId),
-}
-
-#[derive(Clone, Copy, Debug)]
-struct Event {
-    key: f64,
-    kind: EventKind,
-}
-
-impl PartialEq for Event {
-    fn eq(&self, other: &Self) -> bool {
-        self.cmp(other) == Ordering::Equal
-    }
-}
-impl Eq for Event {}
-impl PartialOrd for Event {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-impl Ord for Event {
-    /// Reversed, so that `BinaryHeap` pops the nearest event first.
-    fn cmp(&self, other: &Self) -> Ordering {
-        other.key.total_cmp(&self.key)
-    }
-}
-
-pub(crate) struct Engine<'m, S: Scalar> {
-    pub(crate) mesh: &'m TriMesh,
-    pub(crate) unfolding: Unfolding<S>,
+/// A running propagation: the wedges on the edges and the front of continuous Dijkstra.
+struct Engine<'m, S: Scalar> {
+    mesh: &'m TriMesh,
+    unfolding: Unfolding<S>,
     sources: Vec<SurfacePoint>,
-    pub(crate) slots: Vec<Slot<S>>,
-    pub(crate) free: Vec<u32>,
-    pub(crate) lists: Vec<Vec<u32>>,
-    pub(crate) list_entries: usize,
-    pub(crate) vertices: Vec<Option<VertexDistance<S>>>,
-    /// Whether a vertex's distance improved since it last acted as a pseudo-source.
-    pending_emission: Vec<bool>,
-    queue: BinaryHeap<Event>,
+    wedges: WedgeLists<S>,
+    front: Front<S>,
     max_distance: f64,
     stop: Option<StopPoints<S>>,
-    pub(crate) record_decisions: bool,
-    reached: usize,
-    pub(crate) stats: Stats,
-    pub(crate) scratch: Scratch<S>,
+    stats: Stats,
+}
+
+/// The front and what it needs of the mesh, told by the edge lists of the wedges they queue
+/// and the vertices they reach.
+struct Reach<'a, S: Scalar> {
+    mesh: &'a TriMesh,
+    unfolding: &'a Unfolding<S>,
+    sources: &'a [SurfacePoint],
+    front: &'a mut Front<S>,
+}
+
+impl<S: Scalar> Arrivals<S> for Reach<'_, S> {
+    fn queue(&mut self, slot: u32, generation: u32, wedge: &Wedge<S>) {
+        self.front.push_wedge(slot, generation, wedge);
+    }
+
+    fn reach(&mut self, v: VertexId, d: S, w: &Wedge<S>) {
+        let surface = (self.mesh, self.unfolding, self.sources);
+        self.front.offer_vertex(surface, v, d, w);
+    }
 }
 
 impl<'m, S: Scalar> Engine<'m, S> {
@@ -298,25 +260,17 @@ impl<'m, S: Scalar> Engine<'m, S> {
             mesh,
             unfolding,
             sources,
-            slots: Vec::new(),
-            free: Vec::new(),
-            lists: vec![Vec::new(); mesh.edge_count()],
-            list_entries: 0,
-            vertices: vec![None; mesh.vertex_count()],
-            pending_emission: vec![false; mesh.vertex_count()],
-            queue: BinaryHeap::new(),
+            wedges: WedgeLists::new(mesh.edge_count(), options.record_decisions),
+            front: Front::new(mesh.vertex_count()),
             max_distance,
             stop,
-            record_decisions: options.record_decisions,
-            reached: 0,
             stats: Stats::default(),
-            scratch: Scratch::default(),
         }
     }
 
     fn run(&mut self, progress: &mut impl FnMut(&Progress)) {
         let mut events = 0u64;
-        while let Some(event) = self.queue.pop() {
+        while let Some(event) = self.front.pop() {
             if event.key > self.max_distance {
                 break;
             }
@@ -327,32 +281,24 @@ impl<'m, S: Scalar> Engine<'m, S> {
             events += 1;
             if events % 8192 == 0 {
                 progress(&Progress {
-                    vertices_reached: self.reached,
+                    vertices_reached: self.front.reached(),
                     vertex_count: self.mesh.vertex_count(),
                     front: self.unfolding.to_model(event.key),
                 });
             }
             match event.kind {
                 EventKind::Wedge { slot, generation } => {
-                    let s = &mut self.slots[slot as usize];
-                    if s.generation == generation && s.state == SlotState::Queued {
-                        let key = s.wedge.min_distance().to_f64();
-                        if key > event.key {
-                            self.queue.push(Event { key, ..event });
-                            continue;
+                    match self.wedges.due(slot, generation, event.key) {
+                        Due::Stale => {}
+                        Due::Later(key) => self.front.requeue(event, key),
+                        Due::Now(wedge, kept) => {
+                            self.stats.wedges_propagated += 1;
+                            self.propagate_wedge(&wedge, &kept);
                         }
-                        s.state = SlotState::Propagated;
-                        let (wedge, kept) = (s.wedge.clone(), s.kept.clone());
-                        self.stats.wedges_propagated += 1;
-                        self.propagate_wedge(&wedge, &kept);
                     }
                 }
                 EventKind::Vertex(v) => {
-                    let Some(known) = &self.vertices[v.index()] else {
-                        continue;
-                    };
-                    if std::mem::take(&mut self.pending_emission[v.index()]) {
-                        let (sigma, source) = (known.distance.clone(), known.source);
+                    if let Some((sigma, source)) = self.front.take_emission(v) {
                         self.stats.pseudo_source_emissions += 1;
                         self.emit_from_vertex(v, sigma, PseudoSource::Vertex(v), source);
                     }
@@ -360,7 +306,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             }
         }
         progress(&Progress {
-            vertices_reached: self.reached,
+            vertices_reached: self.front.reached(),
             vertex_count: self.mesh.vertex_count(),
             front: self.unfolding.to_model(self.max_distance.min(f64::MAX)),
         });
@@ -368,92 +314,49 @@ impl<'m, S: Scalar> Engine<'m, S> {
 
     /// Whether every stop point is final with the front at `key`.
     fn stops_here(&mut self, key: f64) -> bool {
-        let vertices = &self.vertices;
+        let front = &self.front;
         self.stop.as_mut().is_some_and(|stop| {
-            stop.all_final(key, |v| {
-                vertices[v.index()]
-                    .as_ref()
-                    .map(|d| (&d.distance, d.approx))
-            })
+            stop.all_final(key, |v| front.vertex(v).map(|d| (&d.distance, d.approx)))
         })
     }
 
-    fn finish(self) -> GeodesicField<'m, S> {
-        let max = self.max_distance;
-        let mut vertices = self.vertices;
-        for v in vertices.iter_mut() {
-            if v.as_ref().is_some_and(|d| d.approx > max) {
-                *v = None;
-            }
-        }
-        // Out of their slots and grouped by edge in place: copies would double the peak memory.
-        let arena = self.slots.into_iter().map(|s| s.wedge).collect();
-        let wedges = EdgeWedges::group(arena, &self.lists);
+    fn finish(mut self) -> GeodesicField<'m, S> {
+        self.stats.peak_queue = self.front.peak_queue();
+        let vertices = self.front.into_vertices(self.max_distance);
         GeodesicField::new(
             self.mesh,
             self.unfolding,
             self.sources,
-            wedges,
+            self.wedges.into_edge_wedges(),
             vertices,
             self.stats,
         )
     }
 
-    pub(crate) fn push_wedge_event(&mut self, slot: u32) {
-        let s = &self.slots[slot as usize];
-        let key = s.wedge.min_distance().to_f64();
-        self.queue.push(Event {
-            key,
-            kind: EventKind::Wedge {
-                slot,
-                generation: s.generation,
-            },
-        });
-        self.stats.peak_queue = self.stats.peak_queue.max(self.queue.len());
+    /// Inserts a wedge on its edge, intersecting it with the wedges there.
+    fn insert(&mut self, w: Wedge<S>, kept: Provenance<S>) {
+        let e = w.edge;
+        let edge = (self.unfolding.length(e), self.mesh.edge(e).vertices);
+        let mut reach = Reach {
+            mesh: self.mesh,
+            unfolding: &self.unfolding,
+            sources: &self.sources,
+            front: &mut self.front,
+        };
+        self.wedges
+            .insert((w, kept), edge, &mut self.stats, &mut reach);
     }
 
-    /// Lowers a vertex's distance if `distance` is better; a vertex that may bend geodesics then
-    /// waits in the queue to act as a pseudo-source. Its twins (ends of its edges of length
-    /// zero, the same point of the surface) take the same distance as it is, not a rounded
-    /// copy of it.
-    pub(crate) fn improve_vertex(&mut self, v: VertexId, distance: S, source: SourceId) {
-        let slot = &mut self.vertices[v.index()];
-        match slot {
-            Some(known) if distance.compare_distance(&known.distance) != Ordering::Less => return,
-            Some(_) => {}
-            None => self.reached += 1,
-        }
-        let approx = distance.to_f64();
-        let twin_distance = self.unfolding.has_twin(v).then(|| distance.clone());
-        *slot = Some(VertexDistance {
-            distance,
-            approx,
-            source,
-        });
-        if self.mesh.may_bend_geodesics(v) {
-            self.pending_emission[v.index()] = true;
-            self.queue.push(Event {
-                key: approx,
-                kind: EventKind::Vertex(v),
-            });
-        }
-        if let Some(distance) = twin_distance {
-            let mesh = self.mesh;
-            for &e in mesh.vertex_edges(v) {
-                if self.unfolding.is_zero_length(e) {
-                    let other = mesh.edge(e).other(v).expect("an edge of the vertex");
-                    self.improve_vertex(other, distance.clone(), source);
-                }
-            }
-        }
+    /// Lowers a vertex's distance if `distance` is better ([`Front::improve_vertex`]).
+    fn improve_vertex(&mut self, v: VertexId, distance: S, source: SourceId) {
+        let surface = (self.mesh, &self.unfolding);
+        self.front.improve_vertex(surface, v, distance, source);
     }
 
-    /// A wedge's distance `d` at the vertex `v`, offered to it: no lower than its pseudo-source's
-    /// straight line to `v` in space, where the backend repairs rounding ([`Scalar::at_least`]).
-    pub(crate) fn offer_vertex(&mut self, v: VertexId, d: S, w: &Wedge<S>) {
-        let (mesh, unfolding, sources) = (self.mesh, &self.unfolding, &self.sources);
-        let d = S::at_least(d, || unfolding.straight_bound(mesh, w, v, sources));
-        self.improve_vertex(v, d, w.source);
+    /// A wedge's distance `d` at the vertex `v`, offered to it ([`Front::offer_vertex`]).
+    fn offer_vertex(&mut self, v: VertexId, d: S, w: &Wedge<S>) {
+        let surface = (self.mesh, &self.unfolding, self.sources.as_slice());
+        self.front.offer_vertex(surface, v, d, w);
     }
 
     /// The initial wedges of a source [SSK+05 §4]: on every edge of every face containing it.
@@ -486,7 +389,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     fn emit_source_vertex(&mut self, v: VertexId, k: SourceId) {
         self.improve_vertex(v, S::zero(), k);
         self.emit_from_vertex(v, S::zero(), PseudoSource::Source(k), k);
-        self.pending_emission[v.index()] = false;
+        self.front.emitted(v);
     }
 
     /// Wedges at `sigma` from the point `p` onto every edge of `faces` (which contain it in
@@ -790,13 +693,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
         }
         let [v0, v1] = self.mesh.edge(w.edge).vertices;
         let d = w.distance_function();
-        if let Some(known) = &self.vertices[v0.index()] {
+        if let Some(known) = self.front.vertex(v0) {
             let via = known.distance.clone() + &w.b1;
             if via.compare_distance(&d.at(&w.b1)) == Ordering::Less {
                 return true;
             }
         }
-        if let Some(known) = &self.vertices[v1.index()] {
+        if let Some(known) = self.front.vertex(v1) {
             let via = known.distance.clone() + &(self.unfolding.length(w.edge).clone() - &w.b0);
             if via.compare_distance(&d.at(&w.b0)) == Ordering::Less {
                 return true;

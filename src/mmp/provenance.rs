@@ -12,7 +12,7 @@
 //!   pseudo-source's own wedges do from the same image), and gives its distance there as the
 //!   pseudo-source's wedges do.
 
-use super::unfold::Planar;
+use super::planar::Planar;
 use crate::scalar::{Scalar, SourceDistance};
 
 /// A vertex on the ray through a wedge's range end from the wedge's pseudo-source: the end lies

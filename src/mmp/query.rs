@@ -3,8 +3,8 @@
 //! through the wedge's range and gives the smallest distance.
 
 use super::field::GeodesicField;
+use super::planar::Planar;
 use super::source::{PointError, SurfacePoint};
-use super::unfold::Planar;
 use super::wedge::Wedge;
 use crate::mesh::{EdgeId, FaceId, SourceId, VertexId};
 use crate::scalar::{Scalar, Sign};

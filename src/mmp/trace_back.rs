@@ -4,9 +4,10 @@
 //! was reached from.
 
 use super::field::GeodesicField;
+use super::planar::Planar;
 use super::query::{Best, Via};
 use super::source::{PointError, SurfacePoint};
-use super::unfold::{Apex, FaceLayout, Planar};
+use super::unfold::{Apex, FaceLayout};
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{EdgeId, FaceId, SourceId, VertexId};
 use crate::scalar::{Scalar, Sign};

@@ -5,20 +5,12 @@
 //! below the line, as seen by a wedge whose pseudo-source is above it. The maps here carry a
 //! point from an edge's frame into the frames of the face's two other edges.
 
+use super::planar::Planar;
 use super::source::SurfacePoint;
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{normalizing_power, EdgeId, Side, TriMesh, VertexId, Wing};
 use crate::scalar::{Scalar, Sign};
 use std::cmp::Ordering;
-
-/// A point in an edge's frame.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Planar<S> {
-    /// Position along the edge, from its `vertices[0]`.
-    pub x: S,
-    /// Signed distance from the edge's line.
-    pub y: S,
-}
 
 /// Per-run geometry in the backend's number type: edge lengths and, for each side of each edge,
 /// the apex of the face there. Computed once per propagation so that every wedge reuses the same

@@ -1,6 +1,6 @@
 //! The wedge (Surazhsky's "window") of Definition 1 [LZT §2].
 
-use super::unfold::Planar;
+use super::planar::Planar;
 use crate::mesh::{EdgeId, Side, SourceId, VertexId};
 use crate::scalar::{Scalar, SourceDistance};
 use serde::Serialize;

@@ -1,0 +1,191 @@
+//! The front of continuous Dijkstra [SSK+05 §4, LZT §2]: the priority queue of events (wedges
+//! ordered by the smallest distance each gives, and vertices waiting to act as pseudo-sources)
+//! and the best known distance of every vertex.
+
+use super::source::SurfacePoint;
+use super::unfold::Unfolding;
+use super::wedge::Wedge;
+use crate::mesh::{SourceId, TriMesh, VertexId};
+use crate::scalar::Scalar;
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+
+/// The best known distance of a vertex: an upper bound during propagation, final after it.
+#[derive(Clone, Debug)]
+pub(crate) struct VertexDistance<S> {
+    pub(crate) distance: S,
+    pub(crate) approx: f64,
+    pub(crate) source: SourceId,
+}
+
+/// What an event is about: the wedge in a slot of the edge lists (as long as the slot is still
+/// of that generation), or a vertex whose distance may have improved.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum EventKind {
+    Wedge { slot: u32, generation: u32 },
+    Vertex(VertexId),
+}
+
+/// An event of the queue, keyed by the `f64` value of its distance.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Event {
+    pub(crate) key: f64,
+    pub(crate) kind: EventKind,
+}
+
+impl PartialEq for Event {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+impl Eq for Event {}
+impl PartialOrd for Event {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Event {
+    /// Reversed, so that `BinaryHeap` pops the nearest event first.
+    fn cmp(&self, other: &Self) -> Ordering {
+        other.key.total_cmp(&self.key)
+    }
+}
+
+/// The queue of events and the vertices' distances.
+pub(crate) struct Front<S> {
+    vertices: Vec<Option<VertexDistance<S>>>,
+    /// Whether a vertex's distance improved since it last acted as a pseudo-source.
+    pending_emission: Vec<bool>,
+    queue: BinaryHeap<Event>,
+    /// Vertices with a distance.
+    reached: usize,
+    /// The longest the queue has been right after a wedge joined it.
+    peak_queue: usize,
+}
+
+impl<S: Scalar> Front<S> {
+    /// An empty queue and no vertex reached, on a mesh of `vertex_count` vertices.
+    pub(crate) fn new(vertex_count: usize) -> Self {
+        Front {
+            vertices: vec![None; vertex_count],
+            pending_emission: vec![false; vertex_count],
+            queue: BinaryHeap::new(),
+            reached: 0,
+            peak_queue: 0,
+        }
+    }
+
+    /// The nearest event, taken from the queue.
+    pub(crate) fn pop(&mut self) -> Option<Event> {
+        self.queue.pop()
+    }
+
+    /// Puts a popped event back into the queue at a later key.
+    pub(crate) fn requeue(&mut self, event: Event, key: f64) {
+        self.queue.push(Event { key, ..event });
+    }
+
+    /// Queues the wedge in `slot`, of `generation`, at the smallest distance it gives.
+    pub(crate) fn push_wedge(&mut self, slot: u32, generation: u32, wedge: &Wedge<S>) {
+        let key = wedge.min_distance().to_f64();
+        self.queue.push(Event {
+            key,
+            kind: EventKind::Wedge { slot, generation },
+        });
+        self.peak_queue = self.peak_queue.max(self.queue.len());
+    }
+
+    /// The longest the queue has been after a wedge joined it.
+    pub(crate) fn peak_queue(&self) -> usize {
+        self.peak_queue
+    }
+
+    /// Vertices with a distance so far.
+    pub(crate) fn reached(&self) -> usize {
+        self.reached
+    }
+
+    /// The best known distance of a vertex.
+    pub(crate) fn vertex(&self, v: VertexId) -> Option<&VertexDistance<S>> {
+        self.vertices[v.index()].as_ref()
+    }
+
+    /// The distance and source of a vertex whose distance improved since it last acted as a
+    /// pseudo-source; the vertex is then no longer pending.
+    pub(crate) fn take_emission(&mut self, v: VertexId) -> Option<(S, SourceId)> {
+        let known = self.vertices[v.index()].as_ref()?;
+        std::mem::take(&mut self.pending_emission[v.index()])
+            .then(|| (known.distance.clone(), known.source))
+    }
+
+    /// Marks a vertex as having acted as a pseudo-source at its present distance.
+    pub(crate) fn emitted(&mut self, v: VertexId) {
+        self.pending_emission[v.index()] = false;
+    }
+
+    /// Lowers a vertex's distance if `distance` is better; a vertex that may bend geodesics then
+    /// waits in the queue to act as a pseudo-source. Its twins (ends of its edges of length
+    /// zero, the same point of the surface) take the same distance as it is, not a rounded
+    /// copy of it.
+    pub(crate) fn improve_vertex(
+        &mut self,
+        (mesh, unfolding): (&TriMesh, &Unfolding<S>),
+        v: VertexId,
+        distance: S,
+        source: SourceId,
+    ) {
+        let slot = &mut self.vertices[v.index()];
+        match slot {
+            Some(known) if distance.compare_distance(&known.distance) != Ordering::Less => return,
+            Some(_) => {}
+            None => self.reached += 1,
+        }
+        let approx = distance.to_f64();
+        let twin_distance = unfolding.has_twin(v).then(|| distance.clone());
+        *slot = Some(VertexDistance {
+            distance,
+            approx,
+            source,
+        });
+        if mesh.may_bend_geodesics(v) {
+            self.pending_emission[v.index()] = true;
+            self.queue.push(Event {
+                key: approx,
+                kind: EventKind::Vertex(v),
+            });
+        }
+        if let Some(distance) = twin_distance {
+            for &e in mesh.vertex_edges(v) {
+                if unfolding.is_zero_length(e) {
+                    let other = mesh.edge(e).other(v).expect("an edge of the vertex");
+                    self.improve_vertex((mesh, unfolding), other, distance.clone(), source);
+                }
+            }
+        }
+    }
+
+    /// A wedge's distance `d` at the vertex `v`, offered to it: no lower than its pseudo-source's
+    /// straight line to `v` in space, where the backend repairs rounding ([`Scalar::at_least`]).
+    pub(crate) fn offer_vertex(
+        &mut self,
+        (mesh, unfolding, sources): (&TriMesh, &Unfolding<S>, &[SurfacePoint]),
+        v: VertexId,
+        d: S,
+        w: &Wedge<S>,
+    ) {
+        let d = S::at_least(d, || unfolding.straight_bound(mesh, w, v, sources));
+        self.improve_vertex((mesh, unfolding), v, d, w.source);
+    }
+
+    /// The vertices' distances at the end of a run, those beyond `max` (the run's maximum
+    /// distance) dropped as unreachable.
+    pub(crate) fn into_vertices(self, max: f64) -> Vec<Option<VertexDistance<S>>> {
+        let mut vertices = self.vertices;
+        for v in vertices.iter_mut() {
+            if v.as_ref().is_some_and(|d| d.approx > max) {
+                *v = None;
+            }
+        }
+        vertices
+    }
+}
