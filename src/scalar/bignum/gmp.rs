@@ -64,6 +64,11 @@ impl Integer {
         self.0.is_divisible(&d.0)
     }
 
+    /// `self mod d` in `0..d`, for `d > 0`.
+    pub(crate) fn rem_small(&self, d: u32) -> u32 {
+        self.0.mod_u(d)
+    }
+
     /// `self / d`, for `d` a divisor of `self`.
     pub(crate) fn div_exact(&self, d: &Integer) -> Integer {
         Integer(rug::Integer::from(self.0.div_exact_ref(&d.0)))

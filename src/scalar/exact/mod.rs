@@ -671,6 +671,51 @@ mod tests {
         assert_eq!((b - near).certified_sign().1, Certificate::Refinement);
     }
 
+    fn normal_form_zero() -> (Sign, Certificate) {
+        (
+            Sign::Zero,
+            Certificate::CertifiedZero(ZeroProof::NormalForm),
+        )
+    }
+
+    /// A big integer with no square factor below 256 (a prime above it).
+    const BIG_PRIME: i64 = 1_000_003;
+
+    #[test]
+    fn radicals_equal_up_to_a_large_square_share_a_symbol() {
+        // Three points on a line in space: |ac| = |ab| + |bc|, radicands 3 p^2, 3 q^2 and
+        // 3 (p + q)^2 with no small square factor in common but 3.
+        let (p, q) = (BIG_PRIME, 999_983);
+        let length = |k: i64| int(3 * k * k).sqrt();
+        let straight = length(p + q) - length(p) - length(q);
+        assert_eq!(straight.certified_sign(), normal_form_zero());
+        // Off the line by one part in 10^24, non-zero: refinement says so.
+        let off = Real::from_rational(
+            Rational::new(Integer::from(1), Integer::from(10).pow(24)).unwrap(),
+        );
+        let bent = (int(3 * (p + q) * (p + q)) + &off).sqrt() - length(p) - length(q);
+        assert_eq!(
+            bent.certified_sign(),
+            (Sign::Positive, Certificate::Refinement)
+        );
+    }
+
+    #[test]
+    fn a_nested_radical_that_denests_is_seen_as_its_denested_form() {
+        // sqrt(3 + 2 sqrt 2) = 1 + sqrt 2, and sqrt(p^2 (5 - 2 sqrt 6)) = p (sqrt 3 - sqrt 2).
+        let r2 = int(2).sqrt();
+        let root = (int(3) + &(int(2) * &r2)).sqrt();
+        assert_eq!((root - &int(1) - &r2).certified_sign(), normal_form_zero());
+        let p = int(BIG_PRIME);
+        let p2 = p.clone() * &p;
+        let nested = (p2.clone() * &int(5) - &(p2 * &int(2) * &int(6).sqrt())).sqrt();
+        let denested = p * &(int(3).sqrt() - &int(2).sqrt());
+        assert_eq!((nested - &denested).certified_sign(), normal_form_zero());
+        // Not a square in Q(sqrt 2): no false denesting.
+        let other = (int(3) + &int(2).sqrt()).sqrt() - &int(1) - &int(2).sqrt();
+        assert_ne!(other.certified_sign().0, Sign::Zero);
+    }
+
     #[test]
     #[should_panic(expected = "non-finite f64 has no exact value")]
     fn from_f64_of_nan_panics() {

@@ -55,7 +55,9 @@ pub(crate) struct NormalForm(BTreeMap<Monomial, Rational>);
 struct Tower {
     id: u64,
     squares: Vec<NormalForm>,
-    integer_radicals: HashMap<Integer, u32>,
+    /// The symbols of integer radicals, by square class ([`square_class`]): radicals whose
+    /// product is a square are one symbol, up to a rational factor.
+    integer_radicals: HashMap<u64, Vec<(Integer, u32)>>,
     radicals: HashMap<NormalForm, u32>,
 }
 
@@ -232,6 +234,9 @@ impl NormalForm {
         if let Some(r) = self.as_rational() {
             return Some(sqrt_of_rational(&r));
         }
+        if let Some(root) = self.denested() {
+            return Some(root);
+        }
         let id = TOWER.with(|t| {
             let mut t = t.borrow_mut();
             match t.radicals.get(self) {
@@ -248,39 +253,121 @@ impl NormalForm {
     }
 }
 
-/// `sqrt(p / q) = (f / q) sqrt(m)` with `p q = f^2 m` and the small square factors of `m`
-/// taken out, so that radicals equal up to a rational factor share one symbol.
+/// The primes whose squares are taken out of an integer radicand and whose quadratic
+/// characters make its square class ([`square_class`]).
+const CLASS_PRIMES: [u32; 54] = [
+    2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89, 97,
+    101, 103, 107, 109, 113, 127, 131, 137, 139, 149, 151, 157, 163, 167, 173, 179, 181, 191, 193,
+    197, 199, 211, 223, 227, 229, 233, 239, 241, 251,
+];
+
+/// A key of the square class of a positive integer `m` without square factors of
+/// [`CLASS_PRIMES`]: if `m m'` is a square, `m` and `m'` have the same key. For each of those
+/// primes `p`, whether `p` divides `m` (then once: the same must hold of `m'`) or else whether
+/// `m` is a square modulo `p` (Euler's criterion; the product of two residues or of two
+/// non-residues is a residue), and `m mod 8` for 2 (odd squares are 1 mod 8). Different classes
+/// share a key only by chance; a shared key is checked exactly.
+fn square_class(m: &Integer) -> u64 {
+    let mut key: u64 = u64::from(m.rem_small(8));
+    for &p in &CLASS_PRIMES[1..] {
+        let r = u64::from(m.rem_small(p));
+        let bit = if r == 0 {
+            2
+        } else {
+            // r^((p - 1) / 2) mod p is 1 for a residue, p - 1 otherwise.
+            let (mut base, mut exp, mut acc) = (r, (p - 1) / 2, 1u64);
+            while exp > 0 {
+                if exp & 1 == 1 {
+                    acc = acc * base % u64::from(p);
+                }
+                base = base * base % u64::from(p);
+                exp >>= 1;
+            }
+            u64::from(acc == 1)
+        };
+        key = key.rotate_left(2) ^ bit;
+    }
+    key
+}
+
+impl NormalForm {
+    /// The square root of `p + q M` (`p`, `q` rational, `M` a product of symbols whose square
+    /// `D` is rational) when it denests: if `c = sqrt(p^2 - q^2 D)` is rational and `p > 0`,
+    /// then `sqrt(p + q sqrt(D)) = sqrt((p + c) / 2) + sign(q) sqrt((p - c) / 2)`. Distances
+    /// between points whose coordinates share radicals are often of this form (a point on a
+    /// line through two others, a right angle), and their identities need the denested root.
+    fn denested(&self) -> Option<NormalForm> {
+        if self.0.len() != 2 {
+            return None;
+        }
+        let p = self.0.get(&Vec::new())?;
+        let (m, q) = self.0.iter().find(|(m, _)| !m.is_empty())?;
+        let mut d = Rational::from(1);
+        for &s in m {
+            d = d * &square_of(s).as_rational()?;
+        }
+        let c2 = p.clone() * p - &(q.clone() * q * &d);
+        if p.cmp0().is_le() || c2.cmp0().is_lt() {
+            return None;
+        }
+        let (n, den) = (c2.numer(), c2.denom());
+        if !(n.is_perfect_square() && den.is_perfect_square()) {
+            return None;
+        }
+        let c = Rational::new(n.sqrt(), den.sqrt())?;
+        let half = Rational::new(Integer::from(1), Integer::from(2))?;
+        let larger = sqrt_of_rational(&((p.clone() + &c) * &half));
+        let smaller = sqrt_of_rational(&((p.clone() - &c) * &half));
+        let sign = if q.cmp0().is_lt() { -1 } else { 1 };
+        larger.add(&smaller, sign)
+    }
+}
+
+/// `sqrt(p / q) = (f / q) sqrt(m)` with `p q = f^2 m` and the square factors of
+/// [`CLASS_PRIMES`] taken out of `m`; radicals whose product is a square (equal up to a rational
+/// factor: on a straight line, `|ac| = |ab| + |bc|` with three radicands of one class) share
+/// one symbol, so that the normal form sees their identities.
 fn sqrt_of_rational(r: &Rational) -> NormalForm {
     if r.cmp0().is_le() {
         return NormalForm::default();
     }
     let mut m = r.numer() * r.denom();
     let mut f = Integer::from(1);
-    for p in [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47] {
-        let p2 = Integer::from(p * p);
+    for p in CLASS_PRIMES {
+        let p2 = Integer::from(i64::from(p * p));
         while m.is_divisible(&p2) {
             m = m.div_exact(&p2);
-            f = f * Integer::from(p);
+            f = f * Integer::from(i64::from(p));
         }
     }
     let over_denominator = |f: Integer| Rational::new(f, r.denom()).expect("a denominator");
     if m.is_perfect_square() {
         return NormalForm::rational(over_denominator(f * m.sqrt()));
     }
-    let id = TOWER.with(|t| {
+    let class = square_class(&m);
+    let (id, factor) = TOWER.with(|t| {
         let mut t = t.borrow_mut();
-        match t.integer_radicals.get(&m) {
-            Some(&id) => id,
+        let same = t.integer_radicals.get(&class).and_then(|radicals| {
+            radicals.iter().find_map(|(other, id)| {
+                // sqrt(m) = sqrt(m m') / m' * sqrt(m'), with sqrt(m m') an integer.
+                let product = m.clone() * other.clone();
+                product
+                    .is_perfect_square()
+                    .then(|| (*id, Rational::new(product.sqrt(), other.clone())))
+            })
+        });
+        match same {
+            Some((id, factor)) => (id, factor.expect("a positive radicand")),
             None => {
                 let id = t.squares.len() as u32;
                 t.squares
                     .push(NormalForm::rational(Rational::from(m.clone())));
-                t.integer_radicals.insert(m, id);
-                id
+                t.integer_radicals.entry(class).or_default().push((m, id));
+                (id, Rational::from(1))
             }
         }
     });
-    NormalForm::monomial(over_denominator(f), vec![id])
+    NormalForm::monomial(over_denominator(f) * &factor, vec![id])
 }
 
 /// The normal form of a node's value, memoized on the node; `None` if it grew too large or

@@ -98,6 +98,12 @@ impl Integer {
         self.0.is_multiple_of(&d.0)
     }
 
+    /// `self mod d` in `0..d`, for `d > 0`.
+    pub(crate) fn rem_small(&self, d: u32) -> u32 {
+        let r = self.0.mod_floor(&BigInt::from(d));
+        r.iter_u32_digits().next().unwrap_or(0)
+    }
+
     /// `self / d`, for `d` a divisor of `self`.
     pub(crate) fn div_exact(&self, d: &Integer) -> Integer {
         Integer(&self.0 / &d.0)
