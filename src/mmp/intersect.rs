@@ -148,6 +148,7 @@ fn lower_by_anchor<S: Scalar>(
                 y: S::zero(),
             },
             distance,
+            image: None,
         })
     };
     let anchored_below = |kept: &Provenance<S>, other: &Wedge<S>| {

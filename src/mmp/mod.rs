@@ -6,6 +6,7 @@
 mod coverage;
 mod edge_wedges;
 mod field;
+mod flat_region;
 mod front;
 mod intersect;
 mod planar;

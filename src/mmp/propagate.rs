@@ -5,6 +5,7 @@
 //! [`wedge_lists`](super::wedge_lists).
 
 use super::field::GeodesicField;
+use super::flat_region::RegionImage;
 use super::front::{EventKind, Front};
 use super::planar::Planar;
 use super::provenance::{Anchor, Provenance};
@@ -208,6 +209,10 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     Ok(engine.finish())
 }
 
+/// What a wedge of a (pseudo-)source keeps, if given: its distances at its edge's vertices, and
+/// its pseudo-source in the frame of a flat region.
+type SourceKept<S> = (Option<[<S as Scalar>::Kept<S>; 2]>, Option<RegionImage<S>>);
+
 /// A wedge about to be born on an edge: the edge, the ends of its range (unsorted), its
 /// pseudo-source there, and what it keeps of its construction.
 type Child<S> = (EdgeId, [S; 2], Planar<S>, Provenance<S>);
@@ -374,7 +379,14 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     x: S::from_f64(t) * &length,
                     y: S::zero(),
                 };
-                self.add_wedge(edge, on_edge, Side::FIRST, S::zero(), (source, k), None);
+                self.add_wedge(
+                    edge,
+                    on_edge,
+                    Side::FIRST,
+                    S::zero(),
+                    (source, k),
+                    (None, None),
+                );
                 let p = self.unfolding.position(self.mesh, point);
                 let faces: Vec<FaceId> = self.mesh.edge_faces(edge).collect();
                 self.emit_from_point(&p, faces, Vec::new(), S::zero(), source, k);
@@ -430,7 +442,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                         }
                     }
                 }
-                self.add_wedge(g, at, side, sigma.clone(), (source, k), None);
+                self.add_wedge(g, at, side, sigma.clone(), (source, k), (None, None));
             }
         }
     }
@@ -475,7 +487,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 beyond.extend(mesh.edge_faces(g).filter(|&h| h != f));
             }
             let ends = mesh.edge(g).vertices.map(to);
-            self.add_wedge(g, at, side, sigma.clone(), (source, k), Some(ends));
+            // In a flat region, the vertex itself in the region's frame (see `flat_region.rs`).
+            let image = self
+                .unfolding
+                .flat_region(f)
+                .map(|(regions, region)| RegionImage {
+                    region,
+                    point: regions.corner(region, v).clone(),
+                });
+            self.add_wedge(g, at, side, sigma.clone(), (source, k), (Some(ends), image));
         }
         for &g in mesh.vertex_edges(v) {
             let x = if mesh.edge(g).vertices[0] == v {
@@ -485,7 +505,14 @@ impl<'m, S: Scalar> Engine<'m, S> {
             };
             let at = Planar { x, y: S::zero() };
             let ends = mesh.edge(g).vertices.map(to);
-            self.add_wedge(g, at, Side::FIRST, sigma.clone(), (source, k), Some(ends));
+            self.add_wedge(
+                g,
+                at,
+                Side::FIRST,
+                sigma.clone(),
+                (source, k),
+                (Some(ends), None),
+            );
         }
         if !beyond.is_empty() {
             let p = self.unfolding.position(mesh, &SurfacePoint::Vertex(v));
@@ -503,7 +530,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         tau: Side,
         sigma: S,
         (source, k): (PseudoSource, SourceId),
-        at_ends: Option<[S::Kept<S>; 2]>,
+        (at_ends, image): SourceKept<S>,
     ) {
         let wedge = Wedge {
             edge: g,
@@ -520,7 +547,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let d = wedge.distance_function();
             [S::keep(|| d.at(&wedge.b0)), S::keep(|| d.at(&wedge.b1))]
         });
-        self.insert(wedge, Provenance::new(at_ends, [None, None]));
+        self.insert(
+            wedge,
+            Provenance::new(at_ends, [None, None]).with_image(image),
+        );
     }
 
     /// Propagates a wedge across the face on the far side of its edge [SSK+05 §4.1, LZT Fig. 2c]:
@@ -552,6 +582,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let face = layout.wing.face;
         let s = w.source_point();
         let length = layout.length;
+        // In a flat region the image travels in the region's frame, one expression however it
+        // crosses the region (see `flat_region.rs`); elsewhere from frame to frame.
+        let flat = self.unfolding.flat_region(face);
+        let image = flat.map(|(regions, region)| {
+            kept.image_in(region).map_or_else(
+                || regions.entering(mesh, (w.edge, face), length, &s),
+                |i| i.point,
+            )
+        });
         // The ray through a range end with an anchor starts at the anchor: the same line,
         // from the vertex whose wedges continue it on the other side (see `provenance.rs`).
         // An anchor on the edge's line (a vertex of a degenerate face) gives no direction.
@@ -570,7 +609,17 @@ impl<'m, S: Scalar> Engine<'m, S> {
             layout.ray_side(from(0), &w.b0),
             layout.ray_side(from(1), &w.b1),
         );
-        let apex_distance = || layout.apex_distance(&s) + &w.sigma;
+        let apex_distance = || {
+            let straight = match (flat, &image) {
+                (Some((regions, region)), Some(p)) => {
+                    let a = regions.corner(region, layout.apex_vertex());
+                    let (dx, dy) = (a[0].clone() - &p[0], a[1].clone() - &p[1]);
+                    (dx.clone() * dx + dy.clone() * dy).sqrt()
+                }
+                _ => layout.apex_distance(&s),
+            };
+            straight + &w.sigma
+        };
         let at_apex = S::keep(apex_distance);
         let apex = S::within(&layout.apex_shadow(&s), &w.b0, &w.b1, length).then(|| {
             let d = S::kept(&at_apex).unwrap_or_else(apex_distance);
@@ -592,9 +641,22 @@ impl<'m, S: Scalar> Engine<'m, S> {
         // face seen from `g`, the very image its own wedges across `g` start from.
         let anchor_on = |g: EdgeId, i: usize, to: &dyn Fn(&Planar<S>) -> Planar<S>| {
             if let Some(a) = &anchors[i] {
+                let Some((regions, region)) = flat else {
+                    return Some(Anchor {
+                        point: to(&a.point),
+                        distance: a.distance.clone(),
+                        image: None,
+                    });
+                };
+                let point = match &a.image {
+                    Some(i) if i.region == region => i.point.clone(),
+                    _ => regions.entering(mesh, (w.edge, face), length, &a.point),
+                };
+                let image = RegionImage { region, point };
                 return Some(Anchor {
-                    point: to(&a.point),
+                    point: regions.to_edge(mesh, (g, face), self.unfolding.length(g), &image.point),
                     distance: a.distance.clone(),
+                    image: Some(image),
                 });
             }
             if !(if i == 0 { at_v0 } else { at_v1 }) {
@@ -602,11 +664,34 @@ impl<'m, S: Scalar> Engine<'m, S> {
             }
             let distance = S::kept(&kept.at_ends[i])?;
             let point = self.unfolding.apex_point(mesh, g, mesh.side_of(g, face)?)?;
-            Some(Anchor { point, distance })
+            let vertex = mesh.edge(w.edge).vertices[i];
+            let image = flat.map(|(regions, region)| RegionImage {
+                region,
+                point: regions.corner(region, vertex).clone(),
+            });
+            Some(Anchor {
+                point,
+                distance,
+                image,
+            })
         };
         let (near, far) = (layout.wing.near, layout.wing.far);
         let to_near = |p: &Planar<S>| layout.to_near(p);
         let to_far = |p: &Planar<S>| layout.to_far(p);
+        // The pseudo-source in the frame of a child's edge, and its image kept for the next face.
+        let source_on = |g: EdgeId, to: &dyn Fn(&Planar<S>) -> Planar<S>| match (flat, &image) {
+            (Some((regions, region)), Some(p)) => {
+                let at = regions.to_edge(mesh, (g, face), self.unfolding.length(g), p);
+                (
+                    at,
+                    Some(RegionImage {
+                        region,
+                        point: p.clone(),
+                    }),
+                )
+            }
+            _ => (to(&s), None),
+        };
         let mut children: [Option<Child<S>>; 2] = [None, None];
         // An edge of length zero (coincident corners) carries no wedge; its face passes rays
         // on to its other edge unchanged.
@@ -629,8 +714,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
             } else {
                 [kept.at_ends[0].clone(), at_apex.clone()]
             };
-            let kept = Provenance::new(ends, [a0, a1]);
-            children[0] = Some((near, positions, layout.to_near(&s), kept));
+            let (at, image) = source_on(near, &to_near);
+            let kept = Provenance::new(ends, [a0, a1]).with_image(image);
+            children[0] = Some((near, positions, at, kept));
         }
         if side1 == Ordering::Greater && !self.unfolding.is_zero_length(far) {
             let (u0, a0) = if side0 == Ordering::Greater {
@@ -651,8 +737,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
             } else {
                 [at_apex.clone(), kept.at_ends[1].clone()]
             };
-            let kept = Provenance::new(ends, [a0, a1]);
-            children[1] = Some((far, positions, layout.to_far(&s), kept));
+            let (at, image) = source_on(far, &to_far);
+            let kept = Provenance::new(ends, [a0, a1]).with_image(image);
+            children[1] = Some((far, positions, at, kept));
         }
         if let Some((v, d)) = apex {
             self.offer_vertex(v, d, w);

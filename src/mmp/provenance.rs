@@ -12,6 +12,7 @@
 //!   pseudo-source's own wedges do from the same image), and gives its distance there as the
 //!   pseudo-source's wedges do.
 
+use super::flat_region::RegionImage;
 use super::planar::Planar;
 use crate::scalar::{Scalar, SourceDistance};
 
@@ -23,6 +24,8 @@ pub(crate) struct Anchor<S> {
     pub(crate) point: Planar<S>,
     /// The wedge's distance at the vertex.
     pub(crate) distance: S,
+    /// The vertex's image in the frame of the flat region the wedge lies in, if it does.
+    pub(crate) image: Option<RegionImage<S>>,
 }
 
 impl<S: Scalar> Anchor<S> {
@@ -46,6 +49,9 @@ pub(crate) struct Provenance<S: Scalar> {
     pub(crate) at_ends: [S::Kept<S>; 2],
     /// The anchors of the range's ends `b0` and `b1`, where they lie on a shadow line.
     pub(crate) anchors: [S::Kept<Anchor<S>>; 2],
+    /// The pseudo-source's image in the frame of the flat region the wedge lies in, if it does
+    /// (see `flat_region.rs`).
+    pub(crate) image: S::Kept<RegionImage<S>>,
 }
 
 impl<S: Scalar> Default for Provenance<S> {
@@ -53,6 +59,7 @@ impl<S: Scalar> Default for Provenance<S> {
         Provenance {
             at_ends: Default::default(),
             anchors: Default::default(),
+            image: Default::default(),
         }
     }
 }
@@ -63,7 +70,19 @@ impl<S: Scalar> Provenance<S> {
         Provenance {
             at_ends,
             anchors: anchors.map(|a| a.map_or_else(Default::default, |a| S::keep(|| a))),
+            image: Default::default(),
         }
+    }
+
+    /// The same provenance with the pseudo-source's image in a flat region's frame.
+    pub(crate) fn with_image(mut self, image: Option<RegionImage<S>>) -> Self {
+        self.image = image.map_or_else(Default::default, |i| S::keep(|| i));
+        self
+    }
+
+    /// The pseudo-source's image in region `region`'s frame, if kept there.
+    pub(crate) fn image_in(&self, region: u32) -> Option<RegionImage<S>> {
+        S::kept(&self.image).filter(|i| i.region == region)
     }
 
     /// The anchor of range end `i` (0: `b0`, 1: `b1`), if kept.
@@ -81,6 +100,7 @@ impl<S: Scalar> Provenance<S> {
         Provenance {
             at_ends: self.at_ends.clone(),
             anchors: [anchor(0), anchor(1)],
+            image: self.image.clone(),
         }
     }
 }

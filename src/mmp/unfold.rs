@@ -5,10 +5,11 @@
 //! below the line, as seen by a wedge whose pseudo-source is above it. The maps here carry a
 //! point from an edge's frame into the frames of the face's two other edges.
 
+use super::flat_region::FlatRegions;
 use super::planar::Planar;
 use super::source::SurfacePoint;
 use super::wedge::{PseudoSource, Wedge};
-use crate::mesh::{normalizing_power, EdgeId, Side, TriMesh, VertexId, Wing};
+use crate::mesh::{normalizing_power, EdgeId, FaceId, Side, TriMesh, VertexId, Wing};
 use crate::scalar::{Scalar, Sign};
 use std::cmp::Ordering;
 
@@ -29,6 +30,8 @@ pub(crate) struct Unfolding<S> {
     has_twin: Vec<bool>,
     /// The apex of the face on each side of each edge, at the side's [`TriMesh::side_slot`].
     apex: Vec<Option<Apex<S>>>,
+    /// The flat regions, for number types that keep values (see `flat_region.rs`).
+    flat: Option<FlatRegions<S>>,
     /// The mesh's unit scale.
     scale: f64,
 }
@@ -147,6 +150,12 @@ impl<S: Scalar> Unfolding<S> {
         let mut zero_length = Vec::with_capacity(edge_count);
         let mut apex = vec![None; mesh.side_slot_count()];
         let mut has_twin = vec![false; mesh.vertex_count()];
+        let flat = S::kept(&S::keep(|| {
+            let points: Vec<[S; 3]> = (0..mesh.vertex_count())
+                .map(|v| vertex_point(mesh, VertexId(v as u32)))
+                .collect();
+            FlatRegions::new(mesh, &points)
+        }));
         for (i, e) in mesh.edges().iter().enumerate() {
             let frame = EdgeFrame::<S>::new(mesh, e.vertices[0], e.vertices[1]);
             if frame.is_none() {
@@ -162,11 +171,20 @@ impl<S: Scalar> Unfolding<S> {
                 .as_ref()
                 .and_then(|_| EdgeFrame::<S>::new(mesh, ends[1], ends[0]));
             for side in mesh.sides(e) {
-                apex[mesh.side_slot(e, side)] = frame
-                    .as_ref()
-                    .zip(backwards.as_ref())
-                    .zip(mesh.wing(e, side))
-                    .map(|((f, b), wing)| Apex::new(mesh, [f, b], ends, wing.apex));
+                let wing = mesh.wing(e, side);
+                let in_region = wing
+                    .zip(flat.as_ref())
+                    .filter(|(w, r)| r.region(w.face).is_some());
+                apex[mesh.side_slot(e, side)] = match (in_region, frame.as_ref()) {
+                    (Some((wing, regions)), Some(_)) => {
+                        Some(regions.apex(mesh, (e, wing.face), &edge_length[i], wing.apex))
+                    }
+                    _ => frame
+                        .as_ref()
+                        .zip(backwards.as_ref())
+                        .zip(wing)
+                        .map(|((f, b), wing)| Apex::new(mesh, [f, b], ends, wing.apex)),
+                };
             }
         }
         Unfolding {
@@ -174,8 +192,17 @@ impl<S: Scalar> Unfolding<S> {
             zero_length,
             has_twin,
             apex,
+            flat,
             scale: mesh.unit_scale(),
         }
+    }
+
+    /// The flat region of a face and the regions' frames, if the face lies in one and the
+    /// number type keeps values.
+    #[inline]
+    pub(crate) fn flat_region(&self, f: FaceId) -> Option<(&FlatRegions<S>, u32)> {
+        let regions = self.flat.as_ref()?;
+        regions.region(f).map(|r| (regions, r))
     }
 
     #[inline]

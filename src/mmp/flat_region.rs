@@ -1,0 +1,203 @@
+//! Flat regions: maximal sets of faces, joined across edges, that lie exactly in one plane with
+//! one orientation, each with one planar frame of its own.
+//!
+//! Inside a flat region, unfolding is the identity, and one image of a pseudo-source reaches an
+//! edge along many sequences of faces (around every vertex of the region, from either side).
+//! Carried from frame to frame face by face, each sequence builds its own expression of the same
+//! point, and an exact backend must then prove equal what the algorithm made equal: on CAD
+//! meshes, thousands of times, mostly beyond its reach. Carried in the region's frame instead,
+//! the image is one expression wherever it goes in the region, and so are the distances it
+//! gives and the vertices it meets, and their equality is proved by structure.
+//!
+//! Only number types that keep values ([`Scalar::Kept`]) use regions: floats lose nothing to
+//! the face-by-face expressions, and would lose accuracy in a frame far from the point at hand.
+
+use super::planar::Planar;
+use super::unfold::Apex;
+use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
+use crate::scalar::{Scalar, Sign};
+use std::collections::HashMap;
+
+/// A point in a region's frame.
+pub(crate) type RegionPoint<S> = [S; 2];
+
+/// A pseudo-source's image in the frame of the flat region whose faces it lights.
+#[derive(Clone, Debug)]
+pub(crate) struct RegionImage<S> {
+    /// The region.
+    pub(crate) region: u32,
+    /// The image in the region's frame.
+    pub(crate) point: RegionPoint<S>,
+}
+
+/// The flat regions of a mesh and the frame of each.
+#[derive(Clone, Debug)]
+pub(crate) struct FlatRegions<S> {
+    /// The region of each face that shares its plane with a neighbour.
+    face_region: Vec<Option<u32>>,
+    /// The corners of each region's faces in the region's frame.
+    corners: HashMap<(u32, VertexId), RegionPoint<S>>,
+}
+
+fn sub<S: Scalar>(p: &[S; 3], q: &[S; 3]) -> [S; 3] {
+    [0, 1, 2].map(|i| p[i].clone() - &q[i])
+}
+
+fn dot<S: Scalar>(a: &[S; 3], b: &[S; 3]) -> S {
+    a[0].clone() * &b[0] + a[1].clone() * &b[1] + a[2].clone() * &b[2]
+}
+
+fn cross<S: Scalar>(a: &[S; 3], b: &[S; 3]) -> [S; 3] {
+    [
+        a[1].clone() * &b[2] - a[2].clone() * &b[1],
+        a[2].clone() * &b[0] - a[0].clone() * &b[2],
+        a[0].clone() * &b[1] - a[1].clone() * &b[0],
+    ]
+}
+
+fn find(parent: &mut [usize], mut i: usize) -> usize {
+    while parent[i] != i {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    i
+}
+
+impl<S: Scalar> FlatRegions<S> {
+    /// The regions of `mesh`, whose vertices are at `points` (scaled coordinates, exact in
+    /// `S`). Two faces on a manifold edge join when the edge's four corners are coplanar and
+    /// the faces' normals point the same way, both decided exactly on the input coordinates
+    /// (polynomials in them, without square roots).
+    pub(crate) fn new(mesh: &TriMesh, points: &[[S; 3]]) -> Self {
+        let normal = |f: FaceId| {
+            let [a, b, c] = mesh.face(f).map(|v| &points[v.index()]);
+            cross(&sub(b, a), &sub(c, a))
+        };
+        let mut parent: Vec<usize> = (0..mesh.face_count()).collect();
+        for e in 0..mesh.edge_count() {
+            let faces: Vec<FaceId> = mesh.edge_faces(EdgeId(e as u32)).collect();
+            let &[f, g] = faces.as_slice() else { continue };
+            let (nf, ng) = (normal(f), normal(g));
+            let parallel = cross(&nf, &ng).iter().all(|c| c.sign() == Sign::Zero);
+            if parallel && dot(&nf, &ng).sign() == Sign::Positive {
+                let (rf, rg) = (find(&mut parent, f.index()), find(&mut parent, g.index()));
+                parent[rf] = rg;
+            }
+        }
+        let mut members: HashMap<usize, Vec<FaceId>> = HashMap::new();
+        for f in 0..mesh.face_count() {
+            let root = find(&mut parent, f);
+            members.entry(root).or_default().push(FaceId(f as u32));
+        }
+        let mut face_region = vec![None; mesh.face_count()];
+        let mut corners = HashMap::new();
+        let mut regions: Vec<Vec<FaceId>> = members.into_values().filter(|m| m.len() > 1).collect();
+        regions.sort_by_key(|m| m[0]);
+        for (r, faces) in regions.iter().enumerate() {
+            let r = r as u32;
+            // The frame: origin at the first face's first corner, x along its first edge, y
+            // turned from it about the face's normal (so the faces run counterclockwise).
+            let [a, b, _] = mesh.face(faces[0]).map(|v| &points[v.index()]);
+            let (origin, u) = (a.clone(), sub(b, a));
+            let w = cross(&normal(faces[0]), &u);
+            let (u_norm, w_norm) = (dot(&u, &u).sqrt(), dot(&w, &w).sqrt());
+            for &f in faces {
+                face_region[f.index()] = Some(r);
+                for v in mesh.face(f) {
+                    corners.entry((r, v)).or_insert_with(|| {
+                        let d = sub(&points[v.index()], &origin);
+                        [dot(&d, &u) / &u_norm, dot(&d, &w) / &w_norm]
+                    });
+                }
+            }
+        }
+        FlatRegions {
+            face_region,
+            corners,
+        }
+    }
+
+    /// The region of a face, if it has one.
+    pub(crate) fn region(&self, f: FaceId) -> Option<u32> {
+        self.face_region[f.index()]
+    }
+
+    /// A corner of a region's faces in the region's frame.
+    pub(crate) fn corner(&self, region: u32, v: VertexId) -> &RegionPoint<S> {
+        &self.corners[&(region, v)]
+    }
+
+    /// The frame of edge `e` seen from its face `f` (in a region): the region points of its
+    /// ends, and `+1` or `-1` for the side of its line `f` lies on (`f` runs counterclockwise
+    /// in the region's frame, so it lies left of the edge when it runs from `vertices[0]` to
+    /// `vertices[1]`).
+    fn edge_in(&self, mesh: &TriMesh, e: EdgeId, f: FaceId) -> (&RegionPoint<S>, [S; 2], bool) {
+        let region = self.face_region[f.index()].expect("a face of a region");
+        let [v0, v1] = mesh.edge(e).vertices;
+        let corners = mesh.face(f);
+        let at = |v: VertexId| corners.iter().position(|&c| c == v).expect("a corner");
+        let left = (at(v0) + 1) % 3 == at(v1);
+        let (p0, p1) = (self.corner(region, v0), self.corner(region, v1));
+        (p0, [p1[0].clone() - &p0[0], p1[1].clone() - &p0[1]], left)
+    }
+
+    /// The apex of face `f` (in a region) in the frame of its edge `e` (of length `length`),
+    /// with its offset from each end of the edge, as [`Apex`] keeps it.
+    pub(crate) fn apex(
+        &self,
+        mesh: &TriMesh,
+        (e, f): (EdgeId, FaceId),
+        length: &S,
+        a: VertexId,
+    ) -> Apex<S> {
+        let region = self.face_region[f.index()].expect("a face of a region");
+        let p = self.corner(region, a);
+        let at = self.to_edge(mesh, (e, f), length, p);
+        let (p0, d, _) = self.edge_in(mesh, e, f);
+        let p1 = [p0[0].clone() + &d[0], p0[1].clone() + &d[1]];
+        let back = [p1[0].clone() - &p[0], p1[1].clone() - &p[1]];
+        Apex {
+            x: at.x,
+            far_x: (d[0].clone() * &back[0] + d[1].clone() * &back[1]) / length,
+            h: at.y,
+        }
+    }
+
+    /// A region point in the frame of edge `e` (of length `length`) as seen from its face `f`:
+    /// `y >= 0` on `f`'s side.
+    pub(crate) fn to_edge(
+        &self,
+        mesh: &TriMesh,
+        (e, f): (EdgeId, FaceId),
+        length: &S,
+        p: &RegionPoint<S>,
+    ) -> Planar<S> {
+        let (p0, d, left) = self.edge_in(mesh, e, f);
+        let q = [p[0].clone() - &p0[0], p[1].clone() - &p0[1]];
+        let along = d[0].clone() * &q[0] + d[1].clone() * &q[1];
+        let across = d[0].clone() * &q[1] - d[1].clone() * &q[0];
+        Planar {
+            x: along / length,
+            y: if left { across } else { -across } / length,
+        }
+    }
+
+    /// The region point of a point in the frame of edge `e` (of length `length`), `at.y`
+    /// measured on the side away from the region's face `f` (where the pseudo-sources of the
+    /// wedges entering `f` across `e` lie).
+    pub(crate) fn entering(
+        &self,
+        mesh: &TriMesh,
+        (e, f): (EdgeId, FaceId),
+        length: &S,
+        at: &Planar<S>,
+    ) -> RegionPoint<S> {
+        let (p0, d, left) = self.edge_in(mesh, e, f);
+        // Towards f is +perp(d) when f lies left; the point lies the other way.
+        let away = if left { -at.y.clone() } else { at.y.clone() };
+        [
+            p0[0].clone() + &((at.x.clone() * &d[0] - away.clone() * &d[1]) / length),
+            p0[1].clone() + &((at.x.clone() * &d[1] + away * &d[0]) / length),
+        ]
+    }
+}
