@@ -236,7 +236,10 @@ impl<S: Scalar> GeodesicField<'_, S> {
         source: SourceId,
     ) -> GeodesicPath {
         GeodesicPath {
-            points: simplices.iter().map(|p| p.position(self.mesh())).collect(),
+            points: simplices
+                .iter()
+                .map(|p| p.position(self.mesh()).to_array())
+                .collect(),
             simplices,
             distance: self.unfolding.to_model(distance.to_f64()),
             source,
