@@ -183,7 +183,7 @@ fn l_shape_paths_bend_at_the_reflex_corner() {
     assert!(
         path.points
             .iter()
-            .any(|&p| DVec3::from(p).distance(DVec3::new(1.0, 1.0, 0.0)) < 1e-9),
+            .any(|p| p.distance(DVec3::new(1.0, 1.0, 0.0)) < 1e-9),
         "{path:?}"
     );
 }

@@ -401,7 +401,7 @@ fn check_trace<S: Scalar, R: Scalar>(
     let length: f64 = path
         .points
         .windows(2)
-        .map(|w| distance_f64(w[0].into(), w[1].into()))
+        .map(|w| distance_f64(w[0], w[1]))
         .sum();
     if !relatively_close(length, distance, tolerances.trace_length) {
         findings.add(ViolationKind::TraceLength, || {
