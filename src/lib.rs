@@ -49,6 +49,10 @@ pub use mmp::{
 };
 pub use scalar::Scalar;
 
+/// The vector crate of mesh positions ([`TriMesh::positions`] are [`glam::DVec3`]), so that
+/// callers can name its types without depending on the same version themselves.
+pub use glam;
+
 /// The README's code, compiled and run as doctests.
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]

@@ -5,6 +5,7 @@ use exact_geodesics::benchmark_model::{
     path_deviation, shortest_path, BenchmarkError, BenchmarkModel, ModelDescription, ModelOptions,
     Point, Rectangle, Scene,
 };
+use exact_geodesics::glam::DVec2;
 use exact_geodesics::{propagate, PropagateOptions, SurfacePoint, TriMesh, VertexId};
 use std::collections::HashMap;
 
@@ -262,11 +263,11 @@ fn lifted_meshes_are_oriented_manifold_disks_with_closed_cylinders() {
             // Heights are the floor's, the walls' rows and the caps'.
             let rows = options.wall_rows as f64;
             for x in mesh.positions() {
-                let row = x[2] / model.wall_height * rows;
+                let row = x.z / model.wall_height * rows;
                 assert!((row - row.round()).abs() < 1e-12 && (0.0..=rows).contains(&row.round()));
             }
             for (v, xy) in [(model.p, s.p), (model.q, s.q)] {
-                assert_eq!(mesh.position(v), [xy[0], xy[1], 0.0]);
+                assert_eq!(mesh.position(v), DVec2::from(xy).extend(0.0));
             }
             assert!(model.wall_height >= model.ground_truth.length);
         }

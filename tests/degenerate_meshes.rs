@@ -1,5 +1,6 @@
 //! Hand-made degenerate meshes: the engine returns documented results, never panics or hangs.
 
+use exact_geodesics::glam::DVec3;
 use exact_geodesics::mesh::shapes;
 use exact_geodesics::{propagate, PropagateOptions, SurfacePoint, TraceError, TriMesh, VertexId};
 
@@ -50,7 +51,7 @@ fn disconnected_parts_and_loose_vertices_are_unreachable() {
         shapes::tetrahedron()
             .positions()
             .iter()
-            .map(|p| [p[0] + 5.0, p[1], p[2]]),
+            .map(|&p| p + 5.0 * DVec3::X),
     );
     faces.extend(
         shapes::tetrahedron()
@@ -58,7 +59,7 @@ fn disconnected_parts_and_loose_vertices_are_unreachable() {
             .iter()
             .map(|f| f.map(|i| i + shift)),
     );
-    positions.push([9.0, 9.0, 9.0]);
+    positions.push(DVec3::splat(9.0));
     let mesh = TriMesh::new(positions, faces).expect("usable mesh");
     assert_eq!(mesh.validation().components, 2);
     assert_eq!(mesh.validation().unreferenced_vertices, vec![VertexId(8)]);

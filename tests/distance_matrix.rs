@@ -1,6 +1,7 @@
 //! Distance matrices: every row equals a single-source run from its vertex, in every backend;
 //! symmetrization; radius-limited rows; errors.
 
+use exact_geodesics::glam::DVec3;
 use exact_geodesics::matrix::{
     distance_matrix, DenseMatrix, MatrixError, MatrixOptions, MatrixRow, ShapeError, SparseMatrix,
 };
@@ -19,10 +20,9 @@ fn bumpy_sphere(seed: u64) -> TriMesh {
     let positions = sphere
         .positions()
         .iter()
-        .map(|p| p.map(|c| c * (0.85 + 0.3 * rng.next_f64())))
+        .map(|&p| p * DVec3::from_array([0; 3].map(|_| 0.85 + 0.3 * rng.next_f64())))
         .collect::<Vec<_>>();
-    let radial = |p: &[f64; 3]| p.iter().map(|c| c * c).sum::<f64>().sqrt();
-    assert!(positions.iter().all(|p| radial(p) > 0.5));
+    assert!(positions.iter().all(|p| p.length() > 0.5));
     TriMesh::new(positions, sphere.faces().to_vec()).unwrap()
 }
 
@@ -186,7 +186,7 @@ fn radius_limited_rows_are_the_dense_entries_within_the_radius() {
 #[test]
 fn a_vertex_no_face_uses_is_at_infinity() {
     let mut positions = shapes::cube().positions().to_vec();
-    positions.push([5.0, 5.0, 5.0]);
+    positions.push(DVec3::splat(5.0));
     let mesh = TriMesh::new(positions, shapes::cube().faces().to_vec()).unwrap();
     let vertices = [0, 8, 6].map(VertexId);
     let matrix = dense::<f64>(&mesh, &vertices, &MatrixOptions::default());

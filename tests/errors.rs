@@ -29,7 +29,7 @@ fn a_mesh_without_faces_is_refused() {
         Some(MeshError::NoFaces { vertices: 3 })
     );
     assert_eq!(
-        TriMesh::new(Vec::new(), Vec::new()).err(),
+        TriMesh::new(Vec::<[f64; 3]>::new(), Vec::new()).err(),
         Some(MeshError::NoFaces { vertices: 0 })
     );
 }

@@ -11,6 +11,7 @@ use exact_geodesics::experiments::{
     random_sources, scale_factor, scale_uniformly, ModelShape, ResolutionRow, ScaleRow, Summary,
     Table1Row, Table2Row,
 };
+use exact_geodesics::glam::DVec3;
 use exact_geodesics::mesh::shapes;
 use exact_geodesics::scalar::Backend;
 use exact_geodesics::{propagate, PropagateOptions, SurfacePoint, TriMesh, VertexId};
@@ -84,12 +85,12 @@ fn normalization_scales_by_the_largest_side_only() {
     let box_ = cube
         .positions()
         .iter()
-        .map(|p| [2.0 * p[0], p[1], p[2]])
+        .map(|&p| p * DVec3::new(2.0, 1.0, 1.0))
         .collect();
     let unit = normalize_to_unit_cube(&TriMesh::new(box_, cube.faces().to_vec()).expect("valid"))
         .expect("has extent");
     for (p, q) in unit.positions().iter().zip(cube.positions()) {
-        assert_eq!(*p, [q[0], q[1] / 2.0, q[2] / 2.0]);
+        assert_eq!(*p, *q / DVec3::new(1.0, 2.0, 2.0));
     }
 }
 
@@ -169,7 +170,7 @@ fn random_sources_are_distinct_used_vertices_and_seeded() {
     assert_eq!(sorted.len(), 5);
     // A vertex no face uses is never drawn.
     let mut positions = shapes::cube().positions().to_vec();
-    positions.push([9.0, 9.0, 9.0]);
+    positions.push(DVec3::splat(9.0));
     let loose = TriMesh::new(positions, shapes::cube().faces().to_vec()).expect("valid");
     let all = random_sources(&loose, 100, 1);
     assert_eq!(all.len(), 8);
@@ -302,7 +303,7 @@ fn observation3_refinement_keeps_the_surface() {
     .expect("a vertex");
     assert!(close(field.vertex_distance(VertexId(6)), 5f64.sqrt()));
     let centre = (0..fine.vertex_count() as u32)
-        .find(|&v| fine.positions()[v as usize] == [0.5, 0.5, 1.0])
+        .find(|&v| fine.positions()[v as usize] == DVec3::new(0.5, 0.5, 1.0))
         .expect("the centre of the top face is a vertex after two subdivisions");
     assert!(close(
         field.vertex_distance(VertexId(centre)),

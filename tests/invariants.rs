@@ -4,6 +4,7 @@
 
 mod common;
 
+use exact_geodesics::glam::DVec3;
 use exact_geodesics::mesh::shapes::{self, SplitMix64};
 use exact_geodesics::{
     propagate, GeodesicField, PropagateOptions, SurfacePoint, TriMesh, VertexId,
@@ -29,7 +30,7 @@ fn random_surface(seed: u64, closed: bool) -> TriMesh {
             ]
         })
         .collect();
-    let bump = |p: [f64; 3]| -> f64 {
+    let bump = |p: DVec3| -> f64 {
         waves
             .iter()
             .map(|w| w[0] * (w[1] * p[0] + w[2]).sin() * (w[1] * p[1] + w[3]).cos())
@@ -40,10 +41,10 @@ fn random_surface(seed: u64, closed: bool) -> TriMesh {
         .iter()
         .map(|&p| {
             if closed {
-                let r = 1.0 + bump(p) + 0.1 * (3.0 * p[2]).sin();
-                [p[0] * r, p[1] * r, p[2] * r]
+                let r = 1.0 + bump(p) + 0.1 * (3.0 * p.z).sin();
+                p * r
             } else {
-                [p[0], p[1], bump(p)]
+                p.with_z(bump(p))
             }
         })
         .collect();
@@ -63,10 +64,6 @@ fn field_from(mesh: &TriMesh, p: SurfacePoint) -> GeodesicField<'_, f64> {
     propagate::<f64>(mesh, &[p], &PropagateOptions::default()).expect("valid source")
 }
 
-fn euclidean(a: [f64; 3], b: [f64; 3]) -> f64 {
-    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
-}
-
 const REL: f64 = 1e-9;
 
 proptest! {
@@ -83,7 +80,7 @@ proptest! {
             for j in 0..3 {
                 let (dij, dji) = (d(i, j), d(j, i));
                 prop_assert!((dij - dji).abs() <= REL * dij.max(1.0), "d({i},{j}) = {dij}, d({j},{i}) = {dji}");
-                let straight = euclidean(points[i].position(&mesh), points[j].position(&mesh));
+                let straight = points[i].position(&mesh).distance(points[j].position(&mesh));
                 prop_assert!(dij >= straight - REL, "d = {dij} < Euclidean {straight}");
             }
         }
@@ -101,7 +98,7 @@ proptest! {
         for (v, along_edges) in graph.iter().enumerate() {
             let got = field.vertex_distance(VertexId(v as u32));
             prop_assert!(got <= along_edges * (1.0 + REL), "v{v}: {got} > edge graph {along_edges}");
-            let straight = euclidean(mesh.position(VertexId(s as u32)), mesh.position(VertexId(v as u32)));
+            let straight = mesh.position(VertexId(s as u32)).distance(mesh.position(VertexId(v as u32)));
             prop_assert!(got >= straight - REL);
         }
         prop_assert!(!field.check_coverage().has_overlaps());

@@ -1,6 +1,7 @@
 //! Mesh files: exact round trips, each format's quirks, errors that name the file and line, and
 //! no panic on any input.
 
+use exact_geodesics::glam::DVec3;
 use exact_geodesics::mesh::io::*;
 use exact_geodesics::{MeshError, TriMesh};
 use proptest::prelude::*;
@@ -41,7 +42,10 @@ fn awkward_mesh() -> TriMesh {
 
 fn assert_identical(a: &TriMesh, b: &TriMesh) {
     let bits = |m: &TriMesh| -> Vec<[u64; 3]> {
-        m.positions().iter().map(|p| p.map(f64::to_bits)).collect()
+        m.positions()
+            .iter()
+            .map(|p| p.to_array().map(f64::to_bits))
+            .collect()
     };
     assert_eq!(bits(a), bits(b));
     assert_eq!(a.faces(), b.faces());
@@ -216,9 +220,9 @@ fn hand_made_big_endian_ply_skips_other_properties_and_elements() {
         bytes.extend(big_endian(&[Be::F32(0.5)]));
     }
     let mesh = read(&bytes, MeshFormat::Ply).expect("valid big-endian PLY");
-    let expected: Vec<[f64; 3]> = corners
+    let expected: Vec<DVec3> = corners
         .iter()
-        .map(|&(x, y, z)| [x, f64::from(y), f64::from(z)])
+        .map(|&(x, y, z)| DVec3::new(x, f64::from(y), f64::from(z)))
         .collect();
     assert_eq!(mesh.positions(), &expected[..]);
     assert_eq!(mesh.faces(), &[[0, 1, 2], [0, 2, 3]]);
@@ -233,7 +237,7 @@ fn obj_quirks_are_read() {
     obj.extend(b"f 1 2 5\nf 2/1 3/1 5/1\nf 3/1/1 4/1/1 5/1/1\nf -3//1 -6//1 -2//1\n");
     let mesh = read(&obj, MeshFormat::Obj).expect("valid OBJ");
     assert_eq!(mesh.vertex_count(), 6);
-    assert_eq!(mesh.positions()[4], [0.5, 0.5, 0.0]);
+    assert_eq!(mesh.positions()[4], DVec3::new(0.5, 0.5, 0.0));
     assert_eq!(mesh.faces(), &[[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]]);
 }
 
@@ -259,7 +263,7 @@ fn off_quirks_are_read() {
     );
     let headerless = "4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
     let mesh = read(headerless, MeshFormat::Off).expect("no header");
-    assert_eq!(mesh.positions()[2], [1.0, 1.0, 0.0]);
+    assert_eq!(mesh.positions()[2], DVec3::new(1.0, 1.0, 0.0));
     for bad in ["4OFF\n", "nOFF\n", "XOFF\n", "OFF BINARY\n", "mesh\n"] {
         assert_eq!(parse_line(read(bad, MeshFormat::Off)), 1, "{bad:?}");
     }
@@ -274,8 +278,8 @@ fn ply_ascii_quirks_are_read() {
         element other 1000000\nend_header\n\
         0.5 1 0 0\n0 2 1 0\n\n0 3 1 1\n0 4 0 1\n2 0.5 0.25 7\n3 0 1 2 9\n3 0 2 3 9\n";
     let mesh = read(ply, MeshFormat::Ply).expect("valid ASCII PLY");
-    assert_eq!(mesh.positions()[0], [0.0, 0.0, 0.5]);
-    assert_eq!(mesh.positions()[2], [1.0, 1.0, 0.0]);
+    assert_eq!(mesh.positions()[0], DVec3::new(0.0, 0.0, 0.5));
+    assert_eq!(mesh.positions()[2], DVec3::new(1.0, 1.0, 0.0));
     assert_eq!(mesh.faces(), &[[0, 1, 2], [0, 2, 3]]);
 }
 

@@ -1,6 +1,7 @@
 //! The examples of [LZT §3] reproduced: meshes, the wedges of Examples 1-3 with eq. (2), the
 //! Face 20 table of Example 4 and the face subdivision of Property 4 (Fig. 15).
 
+use exact_geodesics::glam::DVec2;
 use exact_geodesics::mesh::io::{read_path, ReadOptions};
 use exact_geodesics::mesh::shapes;
 use exact_geodesics::paper::examples::{
@@ -327,7 +328,7 @@ fn subdivision_properties(sub: &FaceSubdivision) {
         if u + v > 1.0 {
             (u, v) = (1.0 - u, 1.0 - v);
         }
-        let x = [0, 1].map(|i| a[i] + u * (b[i] - a[i]) + v * (c[i] - a[i]));
+        let x = a + u * (b - a) + v * (c - a);
         let containing: Vec<usize> = (0..sub.regions.len())
             .filter(|&r| sub.regions[r].contains(x))
             .collect();
@@ -342,7 +343,7 @@ fn subdivision_properties(sub: &FaceSubdivision) {
         let s = region.image;
         for k in 1..50 {
             let t = k as f64 / 50.0;
-            let y = [x[0] + t * (s[0] - x[0]), x[1] + t * (s[1] - x[1])];
+            let y = x + t * (s - x);
             if !sub.face_contains(y, -1e-6) {
                 break;
             }
@@ -367,15 +368,15 @@ fn subdivision_properties(sub: &FaceSubdivision) {
     );
 }
 
-fn segment_distance(x: [f64; 2], p: [f64; 2], q: [f64; 2]) -> f64 {
-    let d = [q[0] - p[0], q[1] - p[1]];
-    let l2 = d[0] * d[0] + d[1] * d[1];
+fn segment_distance(x: DVec2, p: DVec2, q: DVec2) -> f64 {
+    let d = q - p;
+    let l2 = d.length_squared();
     let t = if l2 == 0.0 {
         0.0
     } else {
-        (((x[0] - p[0]) * d[0] + (x[1] - p[1]) * d[1]) / l2).clamp(0.0, 1.0)
+        ((x - p).dot(d) / l2).clamp(0.0, 1.0)
     };
-    (x[0] - p[0] - t * d[0]).hypot(x[1] - p[1] - t * d[1])
+    (x - p - t * d).length()
 }
 
 #[test]

@@ -4,12 +4,9 @@
 mod common;
 
 use common::random_face_point;
+use exact_geodesics::glam::DVec3;
 use exact_geodesics::mesh::shapes::{self, SplitMix64};
 use exact_geodesics::{propagate, PropagateOptions, SourceId, SurfacePoint, VertexId};
-
-fn dist2(a: [f64; 3], b: [f64; 3]) -> f64 {
-    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
-}
 
 fn assert_close(got: f64, want: f64, what: &str) {
     assert!(
@@ -36,14 +33,18 @@ fn convex_planar_triangulations_give_straight_line_distances() {
         for v in 0..mesh.vertex_count() {
             let v = VertexId(v as u32);
             let what = format!("seed {seed}, vertex {v}");
-            assert_close(field.vertex_distance(v), dist2(s, mesh.position(v)), &what);
+            assert_close(
+                field.vertex_distance(v),
+                s.distance(mesh.position(v)),
+                &what,
+            );
         }
         for _ in 0..20 {
             let q = random_face_point(&mesh, &mut rng);
             let d = field.distance_at(&q).expect("valid point");
             assert_close(
                 d,
-                dist2(s, q.position(&mesh)),
+                s.distance(q.position(&mesh)),
                 &format!("seed {seed}, {q:?}"),
             );
             let path = field.trace_back(&q).expect("reachable");
@@ -65,7 +66,7 @@ fn several_sources_split_the_plane_by_their_bisector() {
     for _ in 0..50 {
         let q = random_face_point(&mesh, &mut rng);
         let p = q.position(&mesh);
-        let (d0, d1) = (dist2(p, [0.0; 3]), dist2(p, [1.0, 1.0, 0.0]));
+        let (d0, d1) = (p.length(), p.distance(DVec3::new(1.0, 1.0, 0.0)));
         assert_close(
             field.distance_at(&q).expect("valid"),
             d0.min(d1),
@@ -88,14 +89,14 @@ fn regular_grid_from_an_edge_point_gives_straight_line_distances() {
         let v = VertexId(v as u32);
         assert_close(
             field.vertex_distance(v),
-            dist2(s, mesh.position(v)),
+            s.distance(mesh.position(v)),
             &format!("{v}"),
         );
     }
 }
 
 /// Whether the segment from `a` to `b` (in the plane z = 0) meets the open box `(lo, hi)^2`.
-fn crosses_open_box(a: [f64; 3], b: [f64; 3], lo: f64, hi: f64) -> bool {
+fn crosses_open_box(a: DVec3, b: DVec3, lo: f64, hi: f64) -> bool {
     // Liang-Barsky clipping against the box shrunk by a hair, so that segments running along
     // its sides or through its corners count as outside.
     let (lo, hi) = (lo + 1e-12, hi - 1e-12);
@@ -122,7 +123,7 @@ fn crosses_open_box(a: [f64; 3], b: [f64; 3], lo: f64, hi: f64) -> bool {
 
 /// Shortest path among the corners of one square obstacle: Dijkstra over the visibility graph of
 /// the source, the target and the obstacle's corners.
-fn visibility_distance(s: [f64; 3], t: [f64; 3], corners: &[[f64; 3]], lo: f64, hi: f64) -> f64 {
+fn visibility_distance(s: DVec3, t: DVec3, corners: &[DVec3], lo: f64, hi: f64) -> f64 {
     let mut nodes = vec![s];
     nodes.extend_from_slice(corners);
     nodes.push(t);
@@ -138,7 +139,7 @@ fn visibility_distance(s: [f64; 3], t: [f64; 3], corners: &[[f64; 3]], lo: f64, 
         done[u] = true;
         for v in 0..n {
             if !done[v] && !crosses_open_box(nodes[u], nodes[v], lo, hi) {
-                best[v] = best[v].min(best[u] + dist2(nodes[u], nodes[v]));
+                best[v] = best[v].min(best[u] + nodes[u].distance(nodes[v]));
             }
         }
     }
@@ -150,7 +151,7 @@ fn l_shape_paths_bend_at_the_reflex_corner() {
     let mesh = shapes::l_shape(4);
     let source = (0..mesh.vertex_count() as u32)
         .map(VertexId)
-        .find(|&v| mesh.position(v) == [2.0, 0.5, 0.0])
+        .find(|&v| mesh.position(v) == DVec3::new(2.0, 0.5, 0.0))
         .expect("a vertex at (2, 0.5)");
     let field = propagate::<f64>(
         &mesh,
@@ -164,8 +165,8 @@ fn l_shape_paths_bend_at_the_reflex_corner() {
         let v = VertexId(v as u32);
         let p = mesh.position(v);
         // The L-shape is the square [0, 2]^2 without the open square (1, 2)^2.
-        let want = visibility_distance(s, p, &[[1.0, 1.0, 0.0]], 1.0, 3.0);
-        if want > dist2(s, p) + 1e-9 {
+        let want = visibility_distance(s, p, &[DVec3::new(1.0, 1.0, 0.0)], 1.0, 3.0);
+        if want > s.distance(p) + 1e-9 {
             bent += 1;
         }
         assert_close(field.vertex_distance(v), want, &format!("{v} at {p:?}"));
@@ -173,7 +174,7 @@ fn l_shape_paths_bend_at_the_reflex_corner() {
     assert!(bent > 5, "the test must include paths around the corner");
     let far = (0..mesh.vertex_count() as u32)
         .map(VertexId)
-        .find(|&v| mesh.position(v) == [0.5, 2.0, 0.0])
+        .find(|&v| mesh.position(v) == DVec3::new(0.5, 2.0, 0.0))
         .expect("a vertex at (0.5, 2)");
     let path = field
         .trace_back(&SurfacePoint::Vertex(far))
@@ -182,7 +183,7 @@ fn l_shape_paths_bend_at_the_reflex_corner() {
     assert!(
         path.points
             .iter()
-            .any(|p| dist2(*p, [1.0, 1.0, 0.0]) < 1e-9),
+            .any(|p| p.distance(DVec3::new(1.0, 1.0, 0.0)) < 1e-9),
         "{path:?}"
     );
 }
@@ -191,10 +192,10 @@ fn l_shape_paths_bend_at_the_reflex_corner() {
 fn square_with_hole_matches_the_visibility_graph() {
     let mesh = shapes::square_with_hole(3);
     let corners = [
-        [1.0, 1.0, 0.0],
-        [2.0, 1.0, 0.0],
-        [2.0, 2.0, 0.0],
-        [1.0, 2.0, 0.0],
+        DVec3::new(1.0, 1.0, 0.0),
+        DVec3::new(2.0, 1.0, 0.0),
+        DVec3::new(2.0, 2.0, 0.0),
+        DVec3::new(1.0, 2.0, 0.0),
     ];
     for source in [0u32, 5, 17] {
         let field = propagate::<f64>(

@@ -2,6 +2,7 @@
 //! any integer dtype, surface points as `v`, `("edge", a, b, t)` or `("face", f, (u, v, w))`,
 //! and the simplices of a path as `(kind, index, parameters)`.
 
+use exact_geodesics::glam::DVec3;
 use exact_geodesics::mesh::{EdgeId, FaceId};
 use exact_geodesics::scalar::exact::{MAX_PRECISION_CAP, MIN_PRECISION_CAP};
 use exact_geodesics::scalar::Backend;
@@ -108,7 +109,7 @@ pub fn mesh(
         .as_array()
         .rows()
         .into_iter()
-        .map(|row| [row[0], row[1], row[2]])
+        .map(|row| DVec3::new(row[0], row[1], row[2]))
         .collect();
     let (corners, shape) = indices(triangles, "triangles")?;
     if shape.len() != 2 || shape[1] != 3 {
@@ -277,12 +278,12 @@ pub fn simplex<'py>(py: Python<'py>, point: &SurfacePoint) -> PyResult<Bound<'py
     })
 }
 
-/// Rows of three as an `(n, 3)` NumPy array.
-pub fn rows_of_three<'py, T: numpy::Element + Copy>(
+/// Rows of three (arrays, or vectors such as mesh positions) as an `(n, 3)` NumPy array.
+pub fn rows_of_three<'py, T: numpy::Element, R: Copy + Into<[T; 3]>>(
     py: Python<'py>,
-    rows: &[[T; 3]],
+    rows: &[R],
 ) -> Bound<'py, PyArray2<T>> {
-    let flat: Vec<T> = rows.iter().flatten().copied().collect();
+    let flat: Vec<T> = rows.iter().flat_map(|&row| row.into()).collect();
     Array2::from_shape_vec((rows.len(), 3), flat)
         .expect("n rows of three make an (n, 3) array")
         .into_pyarray(py)

@@ -1,6 +1,7 @@
 //! Comparing a traced geodesic with the ground-truth polyline.
 
 use super::geometry::{distance_to_segment, Point};
+use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 /// How far a traced path is from the ground-truth polyline in the plane.
@@ -22,12 +23,12 @@ impl PathDeviation {
 }
 
 /// Compares a traced path (in space) with a ground-truth polyline (in the plane z = 0).
-pub fn path_deviation(traced: &[[f64; 3]], truth: &[Point]) -> PathDeviation {
-    let planar: Vec<Point> = traced.iter().map(|x| [x[0], x[1]]).collect();
+pub fn path_deviation(traced: &[DVec3], truth: &[Point]) -> PathDeviation {
+    let planar: Vec<Point> = traced.iter().map(|x| x.truncate().to_array()).collect();
     PathDeviation {
         traced_to_truth: one_sided(&planar, truth),
         truth_to_traced: one_sided(truth, &planar),
-        max_height: largest(traced.iter().map(|x| x[2].abs())),
+        max_height: largest(traced.iter().map(|x| x.z.abs())),
     }
 }
 

@@ -2,9 +2,10 @@
 //! so that shortest paths wrap around obstacles and into pockets [LZT §5: "we use both convex
 //! and concave polygon obstacles"].
 
-use super::geometry::{distance_to_segment, locate, Location, Point};
+use super::geometry::{distance, distance_to_segment, locate, Location, Point};
 use super::scene::{Rectangle, Scene};
 use crate::mesh::shapes::SplitMix64;
+use glam::DVec2;
 use std::f64::consts::TAU;
 
 /// Half the side of a cell is 0.5; obstacles stay within this radius of the cell centre.
@@ -30,7 +31,7 @@ impl Scene {
             .iter()
             .enumerate()
             .map(|(i, &cell)| {
-                let centre = [(cell % side) as f64 + 0.5, (cell / side) as f64 + 0.5];
+                let centre = DVec2::new((cell % side) as f64, (cell / side) as f64) + 0.5;
                 place(template(&mut rng, (first_kind + i) % 4), centre, &mut rng)
             })
             .collect();
@@ -81,9 +82,9 @@ fn template(rng: &mut SplitMix64, kind: usize) -> Vec<Point> {
                     } else {
                         uniform(rng, 0.3, 1.0)
                     };
-                    let x = [r * angle.cos(), r * angle.sin()];
+                    let x = r * DVec2::from_angle(angle);
                     angle += TAU * gap / total;
-                    x
+                    x.to_array()
                 })
                 .collect()
         }
@@ -125,36 +126,28 @@ fn template(rng: &mut SplitMix64, kind: usize) -> Vec<Point> {
 fn jitter(rng: &mut SplitMix64, corners: &[Point]) -> Vec<Point> {
     corners
         .iter()
-        .map(|x| {
-            [
-                x[0] + uniform(rng, -0.12, 0.12),
-                x[1] + uniform(rng, -0.12, 0.12),
-            ]
+        .map(|&x| {
+            let shift = DVec2::new(uniform(rng, -0.12, 0.12), uniform(rng, -0.12, 0.12));
+            (DVec2::from(x) + shift).to_array()
         })
         .collect()
 }
 
 /// Centres, rotates and scales a template into the disk of radius `OBSTACLE_RADIUS` at `centre`.
-fn place(corners: Vec<Point>, centre: Point, rng: &mut SplitMix64) -> Vec<Point> {
+fn place(corners: Vec<Point>, centre: DVec2, rng: &mut SplitMix64) -> Vec<Point> {
     let n = corners.len() as f64;
     let mean = corners
         .iter()
-        .fold([0.0, 0.0], |s, x| [s[0] + x[0] / n, s[1] + x[1] / n]);
+        .fold(DVec2::ZERO, |s, &x| s + DVec2::from(x) / n);
     let radius = corners
         .iter()
-        .map(|x| (x[0] - mean[0]).hypot(x[1] - mean[1]))
+        .map(|&x| distance(x, mean.to_array()))
         .fold(0.0, f64::max);
-    let (sin, cos) = uniform(rng, 0.0, TAU).sin_cos();
+    let rotation = DVec2::from_angle(uniform(rng, 0.0, TAU));
     let scale = OBSTACLE_RADIUS / radius;
     corners
         .iter()
-        .map(|x| {
-            let (dx, dy) = (x[0] - mean[0], x[1] - mean[1]);
-            [
-                centre[0] + scale * (cos * dx - sin * dy),
-                centre[1] + scale * (sin * dx + cos * dy),
-            ]
-        })
+        .map(|&x| (centre + scale * rotation.rotate(DVec2::from(x) - mean)).to_array())
         .collect()
 }
 
@@ -167,21 +160,19 @@ fn free_point(
     other: Option<Point>,
     side: usize,
 ) -> Point {
+    let (min, max) = (DVec2::from(rectangle.min), DVec2::from(rectangle.max));
     loop {
-        let x = [
-            uniform(rng, rectangle.min[0], rectangle.max[0]),
-            uniform(rng, rectangle.min[1], rectangle.max[1]),
-        ];
+        let x = DVec2::new(uniform(rng, min.x, max.x), uniform(rng, min.y, max.y));
         let clear = obstacles.iter().all(|o| {
-            locate(o, x) == Location::Outside
-                && (0..o.len())
-                    .all(|i| distance_to_segment(o[i], o[(i + 1) % o.len()], x) >= CLEARANCE)
+            locate(o, x.to_array()) == Location::Outside
+                && (0..o.len()).all(|i| {
+                    distance_to_segment(o[i], o[(i + 1) % o.len()], x.to_array()) >= CLEARANCE
+                })
         });
-        let far = other.is_none_or(|y| (x[0] - y[0]).hypot(x[1] - y[1]) >= 0.5 * side as f64);
-        let inside = (0..2)
-            .all(|i| rectangle.min[i] + CLEARANCE < x[i] && x[i] < rectangle.max[i] - CLEARANCE);
+        let far = other.is_none_or(|y| distance(x.to_array(), y) >= 0.5 * side as f64);
+        let inside = (min + CLEARANCE).cmplt(x).all() && x.cmplt(max - CLEARANCE).all();
         if clear && far && inside {
-            return x;
+            return x.to_array();
         }
     }
 }

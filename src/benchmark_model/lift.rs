@@ -5,6 +5,7 @@ use super::geometry::{orient, Point};
 use super::triangulate::Floor;
 use super::BenchmarkError;
 use crate::TriMesh;
+use glam::{DVec2, DVec3};
 use std::cmp::Ordering;
 
 /// The most wall triangles [`lift`] builds: `2 rows` per boundary edge of an obstacle. Beyond
@@ -37,17 +38,19 @@ pub(crate) fn lift(
             ),
         });
     }
-    let mut positions: Vec<[f64; 3]> = floor.positions.iter().map(|x| [x[0], x[1], 0.0]).collect();
+    let at_height = |x: Point, z: f64| DVec2::from(x).extend(z);
+    let mut positions: Vec<DVec3> = floor.positions.iter().map(|&x| at_height(x, 0.0)).collect();
     let mut faces = floor.triangles.clone();
     for (ring, corners) in floor.rings.iter().zip(obstacles) {
         let m = ring.vertices.len();
         let base = positions.len() as u32;
         for row in 1..=rows {
             let z = height * row as f64 / rows as f64;
-            positions.extend(ring.vertices.iter().map(|&v| {
-                let x = floor.positions[v as usize];
-                [x[0], x[1], z]
-            }));
+            positions.extend(
+                ring.vertices
+                    .iter()
+                    .map(|&v| at_height(floor.positions[v as usize], z)),
+            );
         }
         // Vertex of the wall at ring position j and row r (row 0 is the floor's).
         let at = |j: usize, r: usize| {
@@ -84,8 +87,8 @@ pub(crate) fn lift(
                 faces.push([cycle[0], cycle[1], cycle[2]]);
             } else {
                 let centre = positions.len() as u32;
-                let [x, y] = [0, 1].map(|k| (corners[a][k] + corners[b][k] + corners[c][k]) / 3.0);
-                positions.push([x, y, height]);
+                let [pa, pb, pc] = [a, b, c].map(|k| DVec2::from(corners[k]));
+                positions.push(((pa + pb + pc) / 3.0).extend(height));
                 for i in 0..cycle.len() {
                     faces.push([cycle[i], cycle[(i + 1) % cycle.len()], centre]);
                 }

@@ -5,6 +5,7 @@
 use super::geometry::{bounding_box, locate, orient, Location, Point};
 use super::scene::Rectangle;
 use super::{BenchmarkError, ModelOptions};
+use glam::DVec2;
 use spade::handles::FixedVertexHandle;
 use spade::{
     AngleLimit, ConstrainedDelaunayTriangulation, Point2, RefinementParameters, Triangulation,
@@ -85,10 +86,12 @@ pub(crate) fn triangulate_floor(
     for face in cdt.inner_faces() {
         let corners = face.vertices();
         let xy = corners.map(|v| [v.position().x, v.position().y]);
-        let centroid = [0, 1].map(|i| (xy[0][i] + xy[1][i] + xy[2][i]) / 3.0);
-        let in_obstacle = obstacles.iter().zip(&boxes).any(|(o, b)| {
-            (0..2).all(|i| b[0][i] <= centroid[i] && centroid[i] <= b[1][i])
-                && locate(o, centroid) == Location::Inside
+        let [a, b, c] = xy.map(DVec2::from);
+        let centroid = (a + b + c) / 3.0;
+        let in_obstacle = obstacles.iter().zip(&boxes).any(|(o, [lo, hi])| {
+            DVec2::from(*lo).cmple(centroid).all()
+                && centroid.cmple(DVec2::from(*hi)).all()
+                && locate(o, centroid.to_array()) == Location::Inside
         });
         if in_obstacle {
             continue;
@@ -128,13 +131,13 @@ fn ring(cdt: &Cdt, corners: &[FixedVertexHandle], used: &[u32]) -> Result<Ring, 
         || BenchmarkError::Triangulation("an obstacle boundary is not a closed chain".into());
     let xy = |h: FixedVertexHandle| {
         let p = cdt.vertex(h).position();
-        [p.x, p.y]
+        DVec2::new(p.x, p.y)
     };
     let mut vertices = Vec::new();
     let mut positions = Vec::with_capacity(corners.len());
     for (i, &corner) in corners.iter().enumerate() {
         let target = corners[(i + 1) % corners.len()];
-        let direction = [0, 1].map(|k| xy(target)[k] - xy(corner)[k]);
+        let direction = xy(target) - xy(corner);
         positions.push(vertices.len());
         let (mut previous, mut at) = (None, corner);
         while at != target {
@@ -148,8 +151,8 @@ fn ring(cdt: &Cdt, corners: &[FixedVertexHandle], used: &[u32]) -> Result<Ring, 
                 // vertices lie on the edge up to rounding, so the directions differ clearly.
                 .max_by(|&a, &b| {
                     let along = |h: FixedVertexHandle| {
-                        let d = [0, 1].map(|k| xy(h)[k] - xy(at)[k]);
-                        (d[0] * direction[0] + d[1] * direction[1]) / d[0].hypot(d[1])
+                        let d = xy(h) - xy(at);
+                        d.dot(direction) / d.x.hypot(d.y)
                     };
                     along(a).total_cmp(&along(b))
                 })

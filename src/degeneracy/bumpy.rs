@@ -6,6 +6,7 @@ use super::measure::distance_f64;
 use super::soup::Soup;
 use crate::mesh::shapes::SplitMix64;
 use crate::mesh::vector::power_of_two;
+use glam::DVec3;
 
 /// A random interior manifold vertex and its star size, if one is found in a few tries.
 fn interior_vertex(rng: &mut SplitMix64, soup: &Soup) -> Option<(u32, usize)> {
@@ -20,7 +21,7 @@ fn interior_vertex(rng: &mut SplitMix64, soup: &Soup) -> Option<(u32, usize)> {
 fn split_random_vertex(
     rng: &mut SplitMix64,
     soup: &mut Soup,
-    offset: [f64; 3],
+    offset: DVec3,
     close: bool,
 ) -> Vec<u32> {
     let Some((v, k)) = interior_vertex(rng, soup) else {
@@ -28,8 +29,7 @@ fn split_random_vertex(
     };
     let star = soup.star(v).expect("interior vertex");
     let (first, span) = (index(rng, k), 1 + index(rng, k - 1));
-    let p = soup.positions[v as usize];
-    let at = [0, 1, 2].map(|i| p[i] + offset[i]);
+    let at = soup.positions[v as usize] + offset;
     let copy = soup
         .split_vertex(v, at, first, span, close)
         .expect("interior vertex");
@@ -42,7 +42,7 @@ pub(super) fn coincident_vertices(rng: &mut SplitMix64, max_faces: usize) -> (So
     let mut focus = Vec::new();
     for _ in 0..splits {
         let close = chance(rng, 0.75);
-        focus.extend(split_random_vertex(rng, &mut soup, [0.0; 3], close));
+        focus.extend(split_random_vertex(rng, &mut soup, DVec3::ZERO, close));
     }
     (soup, focus)
 }
@@ -75,7 +75,7 @@ pub(super) fn zero_area_faces(rng: &mut SplitMix64, max_faces: usize) -> (Soup, 
         );
         let t = [0.25, 0.5, 0.75][index(rng, 3)];
         // Exact: p and q are dyadic with few bits, so t (q - p) and p + t (q - p) are too.
-        let at = [0, 1, 2].map(|i| p[i] + t * (q[i] - p[i]));
+        let at = p + t * (q - p);
         let m = soup.insert_on_edge(face, corner, at);
         focus.extend([m, f[0], f[1], f[2]]);
     }
@@ -102,28 +102,23 @@ pub(super) fn slivers(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>
                 soup.positions[f[(corner + 1) % 3] as usize],
             );
             let t = dyadic(0.25 + 0.5 * rng.next_f64());
-            let d = [0, 1, 2].map(|i| q[i] - p[i]);
-            let across = d[0].hypot(d[1]);
+            let d = q - p;
+            let across = d.x.hypot(d.y);
             let direction = if chance(rng, 0.5) || across == 0.0 {
-                [0.0, 0.0, 1.0]
+                DVec3::Z
             } else {
-                [-d[1] / across, d[0] / across, 0.0]
+                (d.truncate().perp() / across).extend(0.0)
             };
             let h = distance_f64(p, q) * tiny(rng) * if chance(rng, 0.5) { 1.0 } else { -1.0 };
-            let at = [0, 1, 2].map(|i| p[i] + t * d[i] + h * direction[i]);
+            let at = p + t * d + h * direction;
             let m = soup.insert_on_edge(face, corner, at);
             focus.extend([m, f[0], f[1], f[2]]);
         } else {
             // Needles: a vertex split into two a tiny distance apart.
-            let u = [0; 3].map(|_| 2.0 * rng.next_f64() - 1.0);
-            let norm = u[0].hypot(u[1]).hypot(u[2]).max(f64::MIN_POSITIVE);
+            let u = DVec3::from([0; 3].map(|_| 2.0 * rng.next_f64() - 1.0));
+            let norm = u.x.hypot(u.y).hypot(u.z).max(f64::MIN_POSITIVE);
             let eps = tiny(rng);
-            focus.extend(split_random_vertex(
-                rng,
-                &mut soup,
-                u.map(|c| eps * c / norm),
-                true,
-            ));
+            focus.extend(split_random_vertex(rng, &mut soup, eps * u / norm, true));
         }
     }
     (soup, focus)
@@ -133,7 +128,7 @@ pub(super) fn scaled(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>)
     let (mut soup, nx, ny) = bumpy_grid(rng, max_faces);
     let scale = power_of_two(int(rng, -600, 600) as i32);
     for p in &mut soup.positions {
-        *p = p.map(|c| c * scale);
+        *p *= scale;
     }
     (soup, grid_corners(nx, ny))
 }
@@ -141,7 +136,7 @@ pub(super) fn scaled(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>)
 pub(super) fn mixed_magnitudes(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>) {
     let (mut soup, nx, ny) = bumpy_grid(rng, max_faces);
     for p in &mut soup.positions {
-        p[0] = (p[0] + 1.0) * 10f64.powi(int(rng, -8, 8) as i32);
+        p.x = (p.x + 1.0) * 10f64.powi(int(rng, -8, 8) as i32);
     }
     (soup, grid_corners(nx, ny))
 }

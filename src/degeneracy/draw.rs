@@ -3,6 +3,7 @@
 
 use super::soup::{Diagonal, Soup};
 use crate::mesh::shapes::SplitMix64;
+use glam::DVec3;
 
 /// A uniform integer in `lo..=hi`.
 pub(crate) fn int(rng: &mut SplitMix64, lo: i64, hi: i64) -> i64 {
@@ -61,7 +62,7 @@ pub(crate) fn bumpy_grid(rng: &mut SplitMix64, max_faces: usize) -> (Soup, usize
     let soup = Soup::grid(
         nx,
         ny,
-        |i, j| [i as f64, j as f64, heights[j * (nx + 1) + i]],
+        |i, j| DVec3::new(i as f64, j as f64, heights[j * (nx + 1) + i]),
         |i, j| cut[j * nx + i],
     );
     (soup, nx, ny)

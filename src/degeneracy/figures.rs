@@ -5,16 +5,17 @@
 use super::draw::{bumpy_grid, chance, diagonals, dyadic, grid_corners, index, int};
 use super::soup::Soup;
 use crate::mesh::shapes::SplitMix64;
+use glam::DVec3;
 
 /// One of four planes through the origin with integer normals, as a map of the plane's integer
 /// coordinates: exact, so a flat figure stays exactly flat and straight lines stay straight.
-fn embedding(rng: &mut SplitMix64) -> impl Fn(f64, f64) -> [f64; 3] {
+fn embedding(rng: &mut SplitMix64) -> impl Fn(f64, f64) -> DVec3 {
     let plane = int(rng, 0, 3);
     move |x, y| match plane {
-        0 => [x, y, 0.0],
-        1 => [x, 0.0, y],
-        2 => [x, y, x],
-        _ => [y, x, x + y],
+        0 => DVec3::new(x, y, 0.0),
+        1 => DVec3::new(x, 0.0, y),
+        2 => DVec3::new(x, y, x),
+        _ => DVec3::new(y, x, x + y),
     }
 }
 
@@ -96,26 +97,26 @@ pub(super) fn flat_fan(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32
 
 /// A regular `n`-gon of radius 1 in z = 0, counter-clockwise from `(1, 0)`, exactly symmetric
 /// under `y -> -y` (and under `x -> -x` when 4 divides `n`), with exact points on the axes.
-fn mirrored_polygon(n: usize) -> Vec<[f64; 3]> {
-    let mut points = vec![[0.0; 3]; n];
+fn mirrored_polygon(n: usize) -> Vec<DVec3> {
+    let mut points = vec![DVec3::ZERO; n];
     for k in 0..=n / 2 {
         let angle = std::f64::consts::TAU * k as f64 / n as f64;
         points[k] = if k == 0 {
-            [1.0, 0.0, 0.0]
+            DVec3::X
         } else if 2 * k == n {
-            [-1.0, 0.0, 0.0]
+            DVec3::NEG_X
         } else if 4 * k == n {
-            [0.0, 1.0, 0.0]
+            DVec3::Y
         } else if n % 4 == 0 && 4 * k > n {
-            let [x, y, _] = points[n / 2 - k];
-            [-x, y, 0.0]
+            let p = points[n / 2 - k];
+            DVec3::new(-p.x, p.y, 0.0)
         } else {
-            [angle.cos(), angle.sin(), 0.0]
+            DVec3::new(angle.cos(), angle.sin(), 0.0)
         };
     }
     for k in n / 2 + 1..n {
-        let [x, y, _] = points[n - k];
-        points[k] = [x, -y, 0.0];
+        let p = points[n - k];
+        points[k] = DVec3::new(p.x, -p.y, 0.0);
     }
     points
 }
@@ -138,15 +139,15 @@ fn pyramid_soup(n: usize, h: f64, shape: PyramidShape) -> (Soup, Vec<u32>) {
         positions: mirrored_polygon(n),
         faces: Vec::new(),
     };
-    let apex = soup.add_vertex([0.0, 0.0, h]);
+    let apex = soup.add_vertex(DVec3::new(0.0, 0.0, h));
     let mut focus = vec![0, (n / 2) as u32, apex];
     for i in 0..n as u32 {
         soup.faces.push([i, (i + 1) % n as u32, apex]);
     }
     let below = match shape {
         PyramidShape::Open => None,
-        PyramidShape::Closed => Some(soup.add_vertex([0.0; 3])),
-        PyramidShape::Bipyramid { depth } => Some(soup.add_vertex([0.0, 0.0, -depth])),
+        PyramidShape::Closed => Some(soup.add_vertex(DVec3::ZERO)),
+        PyramidShape::Bipyramid { depth } => Some(soup.add_vertex(DVec3::new(0.0, 0.0, -depth))),
     };
     if let Some(c) = below {
         for i in 0..n as u32 {
@@ -208,7 +209,7 @@ fn two_grids_at_a_corner(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u
                 i as f64
             };
             let y = j as f64 - my as f64;
-            *p = [x, y, p[2] + slope * (x + y)];
+            *p = DVec3::new(x, y, p.z + slope * (x + y));
         }
     }
     let origin = if third_quadrant {
@@ -226,7 +227,7 @@ fn two_grids_at_a_corner(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u
 fn fans_at_a_vertex(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>) {
     let fans = int(rng, 2, 4.min(max_faces as i64));
     let mut soup = Soup::default();
-    let tip = soup.add_vertex([0.0; 3]);
+    let tip = soup.add_vertex(DVec3::ZERO);
     let mut focus = vec![tip];
     let sector = std::f64::consts::TAU / fans as f64;
     for f in 0..fans {
@@ -236,7 +237,7 @@ fn fans_at_a_vertex(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>) 
             .map(|t| {
                 let angle = sector * (f as f64 + 0.8 * t as f64 / triangles as f64);
                 let z = dyadic(rng.next_f64() - 0.5);
-                soup.add_vertex([radius * angle.cos(), radius * angle.sin(), z])
+                soup.add_vertex(DVec3::new(radius * angle.cos(), radius * angle.sin(), z))
             })
             .collect();
         for pair in ring.windows(2) {
@@ -269,7 +270,7 @@ fn book(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>) {
     let pages = int(rng, 3, 5) as usize;
     let (mut page, nx, ny) = bumpy_grid(rng, max_faces / pages);
     for p in &mut page.positions[..=nx] {
-        p[2] = 0.0;
+        p.z = 0.0;
     }
     let mut soup = page.clone();
     let spine: Vec<(u32, u32)> = (0..=nx as u32).map(|i| (i, i)).collect();
@@ -278,7 +279,7 @@ fn book(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>) {
         let (sin, cos) = turn.sin_cos();
         let mut turned = page.clone();
         for q in &mut turned.positions {
-            *q = [q[0], q[1] * cos - q[2] * sin, q[1] * sin + q[2] * cos];
+            *q = DVec3::new(q.x, q.y * cos - q.z * sin, q.y * sin + q.z * cos);
         }
         soup.append(&turned, &spine);
     }
@@ -306,12 +307,12 @@ fn fins(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u32>) {
     for _ in 0..fins {
         let [a, b] = diagonals[index(rng, diagonals.len())];
         let (p, q) = (soup.positions[a as usize], soup.positions[b as usize]);
-        let lift = [
+        let lift = DVec3::new(
             dyadic(rng.next_f64() - 0.5),
             dyadic(rng.next_f64() - 0.5),
             dyadic(0.25 + rng.next_f64()),
-        ];
-        let apex = soup.add_vertex([0, 1, 2].map(|i| 0.5 * (p[i] + q[i]) + lift[i]));
+        );
+        let apex = soup.add_vertex(0.5 * (p + q) + lift);
         soup.faces.push([a, b, apex]);
         focus.extend([a, b, apex]);
     }
@@ -332,14 +333,14 @@ pub(super) fn components(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u
                 pyramid_soup(n, 1.0, PyramidShape::Bipyramid { depth }).0
             }
             _ => Soup {
-                positions: vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.5]],
+                positions: vec![DVec3::ZERO, DVec3::X, DVec3::new(0.0, 1.0, 0.5)],
                 faces: vec![[0, 1, 2]],
             },
         };
-        let shift = [0; 3].map(|_| dyadic(8.0 * rng.next_f64() - 4.0));
+        let shift = DVec3::from([0; 3].map(|_| dyadic(8.0 * rng.next_f64() - 4.0)));
         let mut moved = part;
         for p in &mut moved.positions {
-            *p = [0, 1, 2].map(|i| p[i] + shift[i]);
+            *p += shift;
         }
         focus.push(soup.append(&moved, &[])[0]);
     }
@@ -347,7 +348,7 @@ pub(super) fn components(rng: &mut SplitMix64, max_faces: usize) -> (Soup, Vec<u
         let at = if chance(rng, 0.5) {
             soup.positions[index(rng, soup.positions.len())]
         } else {
-            [0; 3].map(|_| dyadic(8.0 * rng.next_f64() - 4.0))
+            DVec3::from([0; 3].map(|_| dyadic(8.0 * rng.next_f64() - 4.0)))
         };
         focus.push(soup.add_vertex(at));
     }

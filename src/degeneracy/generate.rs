@@ -182,6 +182,7 @@ pub fn degenerate_mesh(kind: DegenerateKind, seed: u64) -> TriMesh {
 mod tests {
     use super::*;
     use crate::FaceId;
+    use glam::DVec3;
 
     const SEEDS: std::ops::Range<u64> = 0..40;
 
@@ -191,7 +192,7 @@ mod tests {
         })
     }
 
-    fn corners(mesh: &TriMesh, f: usize) -> [[f64; 3]; 3] {
+    fn corners(mesh: &TriMesh, f: usize) -> [DVec3; 3] {
         mesh.face(FaceId(f as u32)).map(|v| mesh.position(v))
     }
 
@@ -213,18 +214,13 @@ mod tests {
             .flat_map(|f| {
                 let p = corners(mesh, f);
                 (0..3).map(move |i| {
-                    let u = [0, 1, 2].map(|k| p[(i + 1) % 3][k] - p[i][k]);
-                    let w = [0, 1, 2].map(|k| p[(i + 2) % 3][k] - p[i][k]);
-                    let cross = [
-                        u[1] * w[2] - u[2] * w[1],
-                        u[2] * w[0] - u[0] * w[2],
-                        u[0] * w[1] - u[1] * w[0],
-                    ];
-                    let dot = u[0] * w[0] + u[1] * w[1] + u[2] * w[2];
-                    cross[0]
-                        .hypot(cross[1])
-                        .hypot(cross[2])
-                        .atan2(dot)
+                    let (u, w) = (p[(i + 1) % 3] - p[i], p[(i + 2) % 3] - p[i]);
+                    let cross = u.cross(w);
+                    cross
+                        .x
+                        .hypot(cross.y)
+                        .hypot(cross.z)
+                        .atan2(u.dot(w))
                         .to_degrees()
                 })
             })
@@ -234,18 +230,8 @@ mod tests {
     /// Whether every vertex lies exactly in the plane of the first face.
     fn exactly_flat(mesh: &TriMesh) -> bool {
         let [o, a, b] = corners(mesh, 0);
-        let (u, w) = (
-            [0, 1, 2].map(|k| a[k] - o[k]),
-            [0, 1, 2].map(|k| b[k] - o[k]),
-        );
-        let n = [
-            u[1] * w[2] - u[2] * w[1],
-            u[2] * w[0] - u[0] * w[2],
-            u[0] * w[1] - u[1] * w[0],
-        ];
-        mesh.positions()
-            .iter()
-            .all(|p| (0..3).map(|k| n[k] * (p[k] - o[k])).sum::<f64>() == 0.0)
+        let n = (a - o).cross(b - o);
+        mesh.positions().iter().all(|&p| n.dot(p - o) == 0.0)
     }
 
     #[test]
@@ -319,12 +305,7 @@ mod tests {
         for kind in [DegenerateKind::FlatGrid, DegenerateKind::FlatFan] {
             for case in cases(kind) {
                 assert!(exactly_flat(&case.mesh), "{kind:?} seed {}", case.seed);
-                assert!(case
-                    .mesh
-                    .positions()
-                    .iter()
-                    .flatten()
-                    .all(|c| c.fract() == 0.0));
+                assert!(case.mesh.positions().iter().all(|&p| p.trunc() == p));
             }
         }
     }
@@ -334,10 +315,9 @@ mod tests {
         for case in cases(DegenerateKind::FlatFan) {
             let p = case.mesh.positions();
             let centre = p[0];
-            let through = p.iter().any(|u| {
-                p.iter()
-                    .any(|w| u != w && (0..3).all(|k| u[k] + w[k] == 2.0 * centre[k]))
-            });
+            let through = p
+                .iter()
+                .any(|u| p.iter().any(|w| u != w && u + w == 2.0 * centre));
             assert!(through, "seed {}", case.seed);
         }
     }
@@ -356,7 +336,7 @@ mod tests {
             let p = case.mesh.positions();
             for q in p {
                 assert!(
-                    p.contains(&[q[0], -q[1], q[2]]),
+                    p.contains(&DVec3::new(q.x, -q.y, q.z)),
                     "seed {}: {q:?}",
                     case.seed
                 );
@@ -370,8 +350,7 @@ mod tests {
             case.mesh
                 .positions()
                 .iter()
-                .flatten()
-                .fold(0.0, |m: f64, c| m.max(c.abs()))
+                .fold(0.0, |m: f64, p| m.max(p.abs().max_element()))
         };
         let extents: Vec<f64> = cases(DegenerateKind::Scaled).map(|c| extent(&c)).collect();
         assert!(extents.iter().any(|&e| e > 2f64.powi(500)));
@@ -382,7 +361,7 @@ mod tests {
     #[test]
     fn mixed_magnitudes_span_six_orders_of_magnitude_in_x() {
         for case in cases(DegenerateKind::MixedMagnitudes) {
-            let xs = case.mesh.positions().iter().map(|p| p[0].abs());
+            let xs = case.mesh.positions().iter().map(|p| p.x.abs());
             let (lo, hi) = xs.fold((f64::INFINITY, 0.0f64), |(lo, hi), x| {
                 (lo.min(x), hi.max(x))
             });

@@ -418,6 +418,7 @@ mod tests {
     use super::*;
     use crate::mesh::shapes;
     use crate::scalar::{Adaptive, Field, Real, Ring};
+    use glam::DVec3;
 
     #[test]
     fn bounds_refuse_a_distance_just_outside_them() {
@@ -461,14 +462,14 @@ mod tests {
     fn unreachable_vertices_at_infinity_break_no_invariant() {
         let mut positions = shapes::tetrahedron().positions().to_vec();
         let mut faces = shapes::tetrahedron().faces().to_vec();
-        positions.extend(positions.clone().iter().map(|p| [p[0] + 3.0, p[1], p[2]]));
+        positions.extend(positions.clone().iter().map(|&p| p + 3.0 * DVec3::X));
         faces.extend(
             shapes::tetrahedron()
                 .faces()
                 .iter()
                 .map(|f| f.map(|v| v + 4)),
         );
-        positions.push([9.0, 9.0, 9.0]);
+        positions.push(DVec3::splat(9.0));
         let mesh = TriMesh::new(positions, faces).expect("two tetrahedra and a loose vertex");
         for (a, b) in [(0, 5), (8, 1), (2, 3)] {
             let report = check_invariants::<f64, Adaptive>(

@@ -9,18 +9,20 @@
 use crate::mesh::vector::normalizing_power;
 use crate::mesh::{TriMesh, VertexId};
 use crate::scalar::Scalar;
+use glam::DVec3;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 /// The length of `q - p` in `f64`, without overflow or underflow.
-pub(crate) fn distance_f64(p: [f64; 3], q: [f64; 3]) -> f64 {
-    (q[0] - p[0]).hypot(q[1] - p[1]).hypot(q[2] - p[2])
+pub(crate) fn distance_f64(p: DVec3, q: DVec3) -> f64 {
+    let d = q - p;
+    d.x.hypot(d.y).hypot(d.z)
 }
 
 /// The length of `q - p` in `S`: the differences are scaled by a power of two near their
 /// largest before squaring, so the value is exact in an exact backend and overflows in none.
-pub(crate) fn distance_in<S: Scalar>(p: [f64; 3], q: [f64; 3]) -> S {
-    let largest = (0..3).map(|i| (q[i] - p[i]).abs()).fold(0.0, f64::max);
+pub(crate) fn distance_in<S: Scalar>(p: DVec3, q: DVec3) -> S {
+    let largest = (q - p).abs().max_element();
     if largest == 0.0 {
         return S::zero();
     }
@@ -121,7 +123,7 @@ mod tests {
     fn distances_at_2_to_600_neither_overflow_nor_underflow() {
         for k in [-600, 0, 600] {
             let s = power_of_two(k);
-            let (p, q) = ([s, 0.0, 0.0], [4.0 * s, 4.0 * s, 0.0]);
+            let (p, q) = (DVec3::new(s, 0.0, 0.0), DVec3::new(4.0 * s, 4.0 * s, 0.0));
             assert_eq!(distance_f64(p, q), 5.0 * s);
             assert_eq!(distance_in::<f64>(p, q), 5.0 * s);
         }
@@ -129,7 +131,7 @@ mod tests {
 
     #[test]
     fn exact_distance_is_the_exact_square_root() {
-        let d = distance_in::<Real>([0.0; 3], [1.0, 1.0, 0.0]);
+        let d = distance_in::<Real>(DVec3::ZERO, DVec3::new(1.0, 1.0, 0.0));
         let two = d.clone() * d - Real::from_f64(2.0);
         assert_eq!(two.sign(), Sign::Zero);
     }

@@ -8,6 +8,7 @@
 //! edges.
 
 use crate::mesh::TriMesh;
+use glam::DVec3;
 use std::collections::{HashMap, HashSet};
 
 /// Which diagonal splits a grid cell.
@@ -22,7 +23,7 @@ pub(crate) enum Diagonal {
 /// Positions and counter-clockwise triangles, freely editable.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Soup {
-    pub(crate) positions: Vec<[f64; 3]>,
+    pub(crate) positions: Vec<DVec3>,
     pub(crate) faces: Vec<[u32; 3]>,
 }
 
@@ -32,7 +33,7 @@ impl Soup {
     pub(crate) fn grid(
         nx: usize,
         ny: usize,
-        mut position: impl FnMut(usize, usize) -> [f64; 3],
+        mut position: impl FnMut(usize, usize) -> DVec3,
         mut diagonal: impl FnMut(usize, usize) -> Diagonal,
     ) -> Soup {
         let mut soup = Soup::default();
@@ -55,7 +56,7 @@ impl Soup {
     }
 
     /// Adds a vertex and returns its index.
-    pub(crate) fn add_vertex(&mut self, p: [f64; 3]) -> u32 {
+    pub(crate) fn add_vertex(&mut self, p: DVec3) -> u32 {
         self.positions.push(p);
         (self.positions.len() - 1) as u32
     }
@@ -85,7 +86,7 @@ impl Soup {
         let mut midpoint = |out: &mut Soup, a: u32, b: u32| {
             *midpoints.entry((a.min(b), a.max(b))).or_insert_with(|| {
                 let (p, q) = (out.positions[a as usize], out.positions[b as usize]);
-                out.add_vertex([0, 1, 2].map(|i| 0.5 * (p[i] + q[i])))
+                out.add_vertex(0.5 * (p + q))
             })
         };
         for &[a, b, c] in &self.faces {
@@ -135,7 +136,7 @@ impl Soup {
     pub(crate) fn split_vertex(
         &mut self,
         v: u32,
-        at: [f64; 3],
+        at: DVec3,
         first: usize,
         span: usize,
         close: bool,
@@ -160,7 +161,7 @@ impl Soup {
     /// Inserts a vertex at `at` on edge `corner` of `face` (from its corner `corner` to the
     /// next): the face becomes two, and a third face spans the whole edge and the new vertex
     /// (zero area when `at` lies on the edge). Returns the new vertex.
-    pub(crate) fn insert_on_edge(&mut self, face: usize, corner: usize, at: [f64; 3]) -> u32 {
+    pub(crate) fn insert_on_edge(&mut self, face: usize, corner: usize, at: DVec3) -> u32 {
         let f = self.faces[face];
         let (p, q, r) = (f[corner % 3], f[(corner + 1) % 3], f[(corner + 2) % 3]);
         let m = self.add_vertex(at);
@@ -190,7 +191,7 @@ impl Soup {
 
     /// Renumbers the vertices: vertex `v` becomes `order[v]`.
     pub(crate) fn renumber(&mut self, order: &[u32]) {
-        let mut positions = vec![[0.0; 3]; self.positions.len()];
+        let mut positions = vec![DVec3::ZERO; self.positions.len()];
         for (v, &to) in order.iter().enumerate() {
             positions[to as usize] = self.positions[v];
         }
@@ -215,7 +216,7 @@ mod tests {
         Soup::grid(
             n,
             n,
-            |i, j| [i as f64, j as f64, 0.0],
+            |i, j| DVec3::new(i as f64, j as f64, 0.0),
             |_, _| Diagonal::Rising,
         )
     }
@@ -252,7 +253,7 @@ mod tests {
     #[test]
     fn inserted_midpoint_makes_one_zero_area_face() {
         let mut soup = square(1);
-        soup.insert_on_edge(0, 0, [0.5, 0.0, 0.0]);
+        soup.insert_on_edge(0, 0, DVec3::new(0.5, 0.0, 0.0));
         let mesh = soup.into_mesh();
         assert_eq!(mesh.validation().zero_area_faces.len(), 1);
         assert_eq!(mesh.validation().inconsistently_oriented_edges, 0);

@@ -4,6 +4,7 @@
 
 use super::ExperimentError;
 use crate::TriMesh;
+use glam::DVec3;
 
 /// The mesh moved and scaled uniformly into `[0, 1]^3`: the minimum corner of the bounding box of
 /// the vertices that faces use goes to the origin, and every coordinate is divided by the
@@ -17,33 +18,30 @@ use crate::TriMesh;
 /// # Example
 /// ```
 /// use exact_geodesics::{experiments::normalize_to_unit_cube, TriMesh};
+/// use glam::DVec3;
 /// let mesh = TriMesh::new(
 ///     vec![[1.0, 1.0, 1.0], [5.0, 1.0, 1.0], [1.0, 3.0, 1.0]],
 ///     vec![[0, 1, 2]],
 /// )?;
 /// let unit = normalize_to_unit_cube(&mesh)?;
-/// assert_eq!(unit.positions(), &[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.5, 0.0]]);
+/// assert_eq!(unit.positions(), &[DVec3::ZERO, DVec3::X, DVec3::new(0.0, 0.5, 0.0)]);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn normalize_to_unit_cube(mesh: &TriMesh) -> Result<TriMesh, ExperimentError> {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for &v in mesh.faces().iter().flatten() {
-        let p = mesh.positions()[v as usize];
-        for k in 0..3 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    let side = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
+    let (lo, hi) = mesh.faces().iter().flatten().fold(
+        (DVec3::INFINITY, DVec3::NEG_INFINITY),
+        |(lo, hi), &v| {
+            let p = mesh.positions()[v as usize];
+            (lo.min(p), hi.max(p))
+        },
+    );
+    let side = (hi - lo).max_element();
     if side == 0.0 {
-        return Err(ExperimentError::NoExtent { point: lo });
+        return Err(ExperimentError::NoExtent {
+            point: lo.to_array(),
+        });
     }
-    let positions = mesh
-        .positions()
-        .iter()
-        .map(|p| std::array::from_fn(|k| (p[k] - lo[k]) / side))
-        .collect();
+    let positions = mesh.positions().iter().map(|&p| (p - lo) / side).collect();
     Ok(TriMesh::new(positions, mesh.faces().to_vec())?)
 }
 
@@ -59,17 +57,13 @@ pub fn normalize_to_unit_cube(mesh: &TriMesh) -> Result<TriMesh, ExperimentError
 /// ```
 /// use exact_geodesics::{experiments::scale_uniformly, mesh::shapes};
 /// let big = scale_uniformly(&shapes::cube(), 1e6)?;
-/// assert_eq!(big.positions()[6], [1e6, 1e6, 1e6]);
+/// assert_eq!(big.positions()[6], glam::DVec3::splat(1e6));
 /// # Ok::<(), exact_geodesics::experiments::ExperimentError>(())
 /// ```
 pub fn scale_uniformly(mesh: &TriMesh, factor: f64) -> Result<TriMesh, ExperimentError> {
     if !(factor.is_finite() && factor > 0.0) {
         return Err(ExperimentError::Scale { factor });
     }
-    let positions = mesh
-        .positions()
-        .iter()
-        .map(|p| p.map(|c| c * factor))
-        .collect();
+    let positions = mesh.positions().iter().map(|&p| p * factor).collect();
     Ok(TriMesh::new(positions, mesh.faces().to_vec())?)
 }

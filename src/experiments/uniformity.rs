@@ -5,7 +5,6 @@
 use super::Summary;
 use crate::mesh::vector::angle;
 use crate::{FaceId, TriMesh};
-use glam::DVec3;
 
 /// The smallest interior angle of every face, in degrees, in face order.
 ///
@@ -23,9 +22,7 @@ use glam::DVec3;
 pub fn min_angles_degrees(mesh: &TriMesh) -> Vec<f64> {
     (0..mesh.face_count())
         .map(|f| {
-            let corners = mesh
-                .face(FaceId(f as u32))
-                .map(|v| DVec3::from(mesh.position(v)));
+            let corners = mesh.face(FaceId(f as u32)).map(|v| mesh.position(v));
             (0..3)
                 .map(|i| {
                     let o = corners[i];

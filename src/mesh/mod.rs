@@ -20,6 +20,8 @@ pub use topology::{Edge, Wing};
 pub use validation::{DuplicateFace, NonManifoldEdge, ValidationReport};
 pub(crate) use vector::normalizing_power;
 
+use glam::DVec3;
+
 /// A triangle mesh with its edge-face topology.
 ///
 /// Edges are undirected; each has one or two faces, or more where the surface is not a manifold
@@ -27,7 +29,7 @@ pub(crate) use vector::normalizing_power;
 /// face's edge `i`.
 #[derive(Debug, Clone)]
 pub struct TriMesh {
-    positions: Vec<[f64; 3]>,
+    positions: Vec<DVec3>,
     faces: Vec<[u32; 3]>,
     topology: topology::Topology,
     report: ValidationReport,
@@ -35,6 +37,9 @@ pub struct TriMesh {
 
 impl TriMesh {
     /// Builds a mesh from positions and triangles (0-based vertex indices).
+    ///
+    /// Positions are anything that converts into a [`glam::DVec3`], such as `[f64; 3]` or
+    /// `DVec3` itself.
     ///
     /// A mesh needs at least one face; vertices that no face uses are kept (and reported in
     /// [`TriMesh::validation`]), and are unreachable from every source.
@@ -57,8 +62,12 @@ impl TriMesh {
     /// assert_eq!(mesh.edge_count(), 3);
     /// # Ok::<(), exact_geodesics::MeshError>(())
     /// ```
-    pub fn new(positions: Vec<[f64; 3]>, faces: Vec<[u32; 3]>) -> Result<TriMesh, MeshError> {
+    pub fn new<P: Into<DVec3>>(
+        positions: Vec<P>,
+        faces: Vec<[u32; 3]>,
+    ) -> Result<TriMesh, MeshError> {
         const MAX: usize = (u32::MAX - 1) as usize;
+        let positions: Vec<DVec3> = positions.into_iter().map(Into::into).collect();
         for count in [positions.len(), faces.len()] {
             if count > MAX / 3 {
                 return Err(MeshError::TooLarge {
@@ -73,12 +82,12 @@ impl TriMesh {
             });
         }
         for (vertex, p) in positions.iter().enumerate() {
-            if p.iter().any(|c| !c.is_finite()) {
+            if !p.is_finite() {
                 return Err(MeshError::NonFiniteCoordinate {
                     vertex,
-                    x: p[0],
-                    y: p[1],
-                    z: p[2],
+                    x: p.x,
+                    y: p.y,
+                    z: p.z,
                 });
             }
         }
@@ -123,7 +132,7 @@ impl TriMesh {
     }
 
     /// All vertex positions, in input order.
-    pub fn positions(&self) -> &[[f64; 3]] {
+    pub fn positions(&self) -> &[DVec3] {
         &self.positions
     }
 
@@ -132,7 +141,7 @@ impl TriMesh {
     /// # Panics
     /// If `v` is not a vertex of the mesh.
     #[inline]
-    pub fn position(&self, v: VertexId) -> [f64; 3] {
+    pub fn position(&self, v: VertexId) -> DVec3 {
         self.positions[v.index()]
     }
 

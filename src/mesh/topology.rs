@@ -91,12 +91,11 @@ const FLOAT_RESOLUTION: f64 = 3.054936363499605e-151;
 /// one that brings the largest coordinate near 1. Multiplying by a power of two is exact
 /// (below `2^-1022` it rounds to subnormals, which only a model spanning more than 300
 /// orders of magnitude reaches).
-fn unit_scale(positions: &[[f64; 3]]) -> f64 {
+fn unit_scale(positions: &[DVec3]) -> f64 {
     const COMFORTABLE: f64 = TWO_TO_64;
     let largest = positions
         .iter()
-        .flatten()
-        .fold(0.0f64, |m, c| m.max(c.abs()));
+        .fold(0.0f64, |m, p| m.max(p.abs().max_element()));
     if largest == 0.0 || (COMFORTABLE.recip()..=COMFORTABLE).contains(&largest) {
         1.0
     } else {
@@ -158,10 +157,7 @@ impl UnionFind {
 }
 
 impl Topology {
-    pub(super) fn build(
-        positions: &[[f64; 3]],
-        faces: &[[u32; 3]],
-    ) -> (Topology, ValidationReport) {
+    pub(super) fn build(positions: &[DVec3], faces: &[[u32; 3]]) -> (Topology, ValidationReport) {
         let nv = positions.len();
         let mut report = ValidationReport::default();
         let mut edge_of: HashMap<(u32, u32), u32> = HashMap::with_capacity(faces.len() * 2);
@@ -236,7 +232,7 @@ impl Topology {
         // Geometry in coordinates scaled by a power of two (exact), so that squared lengths
         // neither overflow nor underflow whatever the model's units.
         let unit_scale = unit_scale(positions);
-        let scaled = |v: usize| DVec3::from(positions[v]) * unit_scale;
+        let scaled = |v: usize| positions[v] * unit_scale;
         let mut edge_length = Vec::with_capacity(edges.len());
         for (ei, e) in edges.iter().enumerate() {
             let scaled_length =

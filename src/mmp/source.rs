@@ -1,6 +1,7 @@
 //! Points on the surface: sources, targets and the points of a traced path.
 
 use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
+use glam::DVec3;
 use serde::Serialize;
 use thiserror::Error;
 
@@ -213,16 +214,16 @@ impl SurfacePoint {
     /// # Panics
     /// If the point names a vertex, edge or face the mesh does not have (see
     /// [`SurfacePoint::validated`]).
-    pub fn position(&self, mesh: &TriMesh) -> [f64; 3] {
+    pub fn position(&self, mesh: &TriMesh) -> DVec3 {
         match *self {
             SurfacePoint::Vertex(v) => mesh.position(v),
             SurfacePoint::Edge { edge, t } => {
                 let [a, b] = mesh.edge(edge).vertices.map(|v| mesh.position(v));
-                [0, 1, 2].map(|i| a[i] + t * (b[i] - a[i]))
+                a + t * (b - a)
             }
             SurfacePoint::Face { face, bary } => {
                 let c = mesh.face(face).map(|v| mesh.position(v));
-                [0, 1, 2].map(|i| bary[0] * c[0][i] + bary[1] * c[1][i] + bary[2] * c[2][i])
+                bary[0] * c[0] + bary[1] * c[1] + bary[2] * c[2]
             }
         }
     }

@@ -11,6 +11,7 @@ use super::unfold::{Apex, FaceLayout};
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{EdgeId, FaceId, SourceId, VertexId};
 use crate::scalar::{Scalar, Sign};
+use glam::DVec3;
 use serde::Serialize;
 use std::cmp::Ordering;
 use thiserror::Error;
@@ -19,7 +20,7 @@ use thiserror::Error;
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct GeodesicPath {
     /// The path's points, from the target to the source, in space.
-    pub points: Vec<[f64; 3]>,
+    pub points: Vec<DVec3>,
     /// The same points, named by the simplex containing each.
     pub simplices: Vec<SurfacePoint>,
     /// The geodesic distance of the target, as the field gives it.
@@ -35,8 +36,8 @@ impl GeodesicPath {
         self.points
             .windows(2)
             .map(|p| {
-                let d = [0, 1, 2].map(|i| p[1][i] - p[0][i]);
-                d[0].hypot(d[1]).hypot(d[2])
+                let d = p[1] - p[0];
+                d.x.hypot(d.y).hypot(d.z)
             })
             .fold(0.0, |sum, d| sum + d)
     }

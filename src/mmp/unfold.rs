@@ -140,7 +140,7 @@ impl<S: Scalar> Apex<S> {
 /// A vertex's position in scaled coordinates, in the backend's number type.
 pub(crate) fn vertex_point<S: Scalar>(mesh: &TriMesh, v: VertexId) -> [S; 3] {
     let scale = S::from_f64(mesh.unit_scale());
-    mesh.position(v).map(|c| S::from_f64(c) * &scale)
+    mesh.position(v).to_array().map(|c| S::from_f64(c) * &scale)
 }
 
 impl<S: Scalar> Unfolding<S> {

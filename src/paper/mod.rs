@@ -34,8 +34,8 @@ pub fn subdivision_summary(sub: &FaceSubdivision) -> String {
             r.label,
             r.sigma,
             r.area(),
-            r.image[0],
-            r.image[1]
+            r.image.x,
+            r.image.y
         )
         .expect("String");
     }

@@ -23,7 +23,7 @@ fn centroid(polygon: &[Point2]) -> Point2 {
     let n = polygon.len();
     let (mut a, mut moment) = (0.0, DVec2::ZERO);
     for i in 0..n {
-        let (p, q) = (DVec2::from(polygon[i]), DVec2::from(polygon[(i + 1) % n]));
+        let (p, q) = (polygon[i], polygon[(i + 1) % n]);
         let c = p.perp_dot(q);
         a += c;
         moment += (p + q) * c;
@@ -31,34 +31,29 @@ fn centroid(polygon: &[Point2]) -> Point2 {
     if a.abs() < 1e-300 {
         polygon[0]
     } else {
-        (moment / (3.0 * a)).to_array()
+        moment / (3.0 * a)
     }
 }
 
 /// The subdivision as an SVG document.
 pub fn subdivision_svg(sub: &FaceSubdivision) -> String {
-    let xs = sub.layout.map(|p| p[0]);
-    let ys = sub.layout.map(|p| p[1]);
-    let (x0, x1) = (
-        xs.iter().copied().fold(f64::INFINITY, f64::min),
-        xs.iter().copied().fold(f64::NEG_INFINITY, f64::max),
-    );
-    let (y0, y1) = (
-        ys.iter().copied().fold(f64::INFINITY, f64::min),
-        ys.iter().copied().fold(f64::NEG_INFINITY, f64::max),
-    );
+    let (lo, hi) = sub
+        .layout
+        .iter()
+        .fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), &p| {
+            (lo.min(p), hi.max(p))
+        });
     let margin = 60.0;
-    let scale = (SIZE - 2.0 * margin) / (x1 - x0).max(y1 - y0);
+    let scale = (SIZE - 2.0 * margin) / (hi - lo).max_element();
+    // To pixels, y pointing down.
     let map = |p: Point2| {
-        [
-            margin + (p[0] - x0) * scale,
-            SIZE - margin - (p[1] - y0) * scale,
-        ]
+        let q = (p - lo) * scale;
+        DVec2::new(margin + q.x, SIZE - margin - q.y)
     };
     let path = |points: &[Point2], close: bool| {
         let mut d = String::new();
         for (i, &p) in points.iter().enumerate() {
-            let [x, y] = map(p);
+            let DVec2 { x, y } = map(p);
             write!(d, "{}{x:.2},{y:.2} ", if i == 0 { "M" } else { "L" }).expect("String");
         }
         if close {
@@ -104,7 +99,7 @@ pub fn subdivision_svg(sub: &FaceSubdivision) -> String {
     )
     .expect("String");
     for r in &sub.regions {
-        let [x, y] = map(centroid(&r.polygon));
+        let DVec2 { x, y } = map(centroid(&r.polygon));
         writeln!(
             svg,
             r#"<text x="{x:.2}" y="{y:.2}" font-size="20" text-anchor="middle" dominant-baseline="middle">{}</text>"#,
@@ -112,16 +107,19 @@ pub fn subdivision_svg(sub: &FaceSubdivision) -> String {
         )
         .expect("String");
     }
-    let [cx, cy] = map(centroid(&sub.layout));
+    let centre = map(centroid(&sub.layout));
     for (k, &p) in sub.layout.iter().enumerate() {
-        let [x, y] = map(p);
-        let (dx, dy) = (x - cx, y - cy);
-        let l = dx.hypot(dy).max(1e-9);
+        let at = map(p);
+        let d = at - centre;
+        // The corner's name 28 pixels out from the face's centroid.
+        let name = at + 28.0 * d / d.x.hypot(d.y).max(1e-9);
         writeln!(
             svg,
-            r#"<circle cx="{x:.2}" cy="{y:.2}" r="5" fill="black"/><text x="{:.2}" y="{:.2}" font-size="22" font-weight="bold" text-anchor="middle" dominant-baseline="middle">v{}</text>"#,
-            x + 28.0 * dx / l,
-            y + 28.0 * dy / l,
+            r#"<circle cx="{:.2}" cy="{:.2}" r="5" fill="black"/><text x="{:.2}" y="{:.2}" font-size="22" font-weight="bold" text-anchor="middle" dominant-baseline="middle">v{}</text>"#,
+            at.x,
+            at.y,
+            name.x,
+            name.y,
             sub.corners[k].0
         )
         .expect("String");

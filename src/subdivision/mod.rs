@@ -16,10 +16,11 @@ pub use tolerance::SubdivisionTolerance;
 use crate::mesh::{FaceId, VertexId};
 use crate::mmp::{GeodesicField, PseudoSource};
 use crate::scalar::Scalar;
+use glam::DVec2;
 use serde::Serialize;
 
 /// A point of the plane the face is unfolded into.
-pub type Point2 = [f64; 2];
+pub type Point2 = DVec2;
 
 /// One region of a face's subdivision: the points closest to one image of one pseudo-source.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -51,9 +52,9 @@ impl Region {
         let mut inside = false;
         for i in 0..n {
             let (a, b) = (self.polygon[i], self.polygon[(i + 1) % n]);
-            if (a[1] > p[1]) != (b[1] > p[1]) {
-                let x = a[0] + (p[1] - a[1]) / (b[1] - a[1]) * (b[0] - a[0]);
-                if p[0] < x {
+            if (a.y > p.y) != (b.y > p.y) {
+                let x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
+                if p.x < x {
                     inside = !inside;
                 }
             }
@@ -121,27 +122,17 @@ struct Image {
     first: (usize, f64),
 }
 
-fn sub(a: Point2, b: Point2) -> Point2 {
-    [a[0] - b[0], a[1] - b[1]]
-}
-
-fn cross(a: Point2, b: Point2) -> f64 {
-    a[0] * b[1] - a[1] * b[0]
-}
-
-fn norm(a: Point2) -> f64 {
-    a[0].hypot(a[1])
-}
-
-fn along(p: Point2, d: Point2, t: f64) -> Point2 {
-    [p[0] + t * d[0], p[1] + t * d[1]]
+/// The length of `a` by `hypot`, which neither overflows nor underflows (unlike
+/// [`DVec2::length`]).
+fn norm(a: DVec2) -> f64 {
+    a.x.hypot(a.y)
 }
 
 /// Shoelace area of a polygon (positive when counter-clockwise).
 pub fn polygon_area(polygon: &[Point2]) -> f64 {
     let n = polygon.len();
     (0..n)
-        .map(|i| cross(polygon[i], polygon[(i + 1) % n]))
+        .map(|i| polygon[i].perp_dot(polygon[(i + 1) % n]))
         .sum::<f64>()
         / 2.0
 }
@@ -160,11 +151,11 @@ impl FaceSubdivision {
     /// Whether `p` lies in the face, within `slack` (relative to the face's size).
     pub fn face_contains(&self, p: Point2, slack: f64) -> bool {
         let [a, b, c] = self.layout;
-        let area2 = cross(sub(b, a), sub(c, a));
+        let area2 = (b - a).perp_dot(c - a);
         let tol = -slack * area2;
-        cross(sub(b, a), sub(p, a)) >= tol
-            && cross(sub(c, b), sub(p, b)) >= tol
-            && cross(sub(a, c), sub(p, c)) >= tol
+        (b - a).perp_dot(p - a) >= tol
+            && (c - b).perp_dot(p - b) >= tol
+            && (a - c).perp_dot(p - c) >= tol
     }
 }
 
@@ -175,11 +166,7 @@ impl FaceSubdivision {
 pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -> FaceSubdivision {
     let mesh = field.mesh();
     let corners = mesh.face(face);
-    let p = |v: VertexId| mesh.position(v);
-    let dist3 = |a: VertexId, b: VertexId| {
-        let (x, y) = (p(a), p(b));
-        ((x[0] - y[0]).powi(2) + (x[1] - y[1]).powi(2) + (x[2] - y[2]).powi(2)).sqrt()
-    };
+    let dist3 = |a: VertexId, b: VertexId| mesh.position(a).distance(mesh.position(b));
     let (l01, l02, l12) = (
         dist3(corners[0], corners[1]),
         dist3(corners[0], corners[2]),
@@ -187,9 +174,9 @@ pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -
     );
     let x2 = (l01 * l01 + l02 * l02 - l12 * l12) / (2.0 * l01);
     let layout = [
-        [0.0, 0.0],
-        [l01, 0.0],
-        [x2, (l02 * l02 - x2 * x2).max(0.0).sqrt()],
+        DVec2::ZERO,
+        DVec2::new(l01, 0.0),
+        DVec2::new(x2, (l02 * l02 - x2 * x2).max(0.0).sqrt()),
     ];
     let scale = l01.max(l02).max(l12);
     let tol = Tol::POINT * scale;
@@ -202,22 +189,19 @@ pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -
             corner_of(edge.vertices[0]).expect("edge of the face"),
             corner_of(edge.vertices[1]).expect("edge of the face"),
         );
-        let length = norm(sub(p1, p0));
-        let u = [(p1[0] - p0[0]) / length, (p1[1] - p0[1]) / length];
+        let length = norm(p1 - p0);
+        let u = (p1 - p0) / length;
         let opposite = layout[(i + 2) % 3];
-        let inward = if cross(u, sub(opposite, p0)) > 0.0 {
-            [-u[1], u[0]]
+        let inward = if u.perp_dot(opposite - p0) > 0.0 {
+            u.perp()
         } else {
-            [u[1], -u[0]]
+            -u.perp()
         };
         for w in field.wedges(e) {
             let (x, y) = (w.source_x.to_f64(), w.source_y.to_f64());
             let inside = mesh.side_of(e, face) == Some(w.tau);
             let h = if inside { y } else { -y };
-            let mut position = [
-                p0[0] + x * u[0] + h * inward[0],
-                p0[1] + x * u[1] + h * inward[1],
-            ];
+            let mut position = p0 + x * u + h * inward;
             let vertex = match w.pseudo_source {
                 PseudoSource::Vertex(v) => Some(v),
                 PseudoSource::Source(k) => match field.sources()[k.index()] {
@@ -225,14 +209,14 @@ pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -
                     _ => None,
                 },
             };
-            let at_corner = layout.iter().position(|&c| norm(sub(c, position)) < tol);
+            let at_corner = layout.iter().position(|&c| norm(c - position) < tol);
             let reach = if let Some(k) = at_corner {
                 position = layout[k];
                 Reach::Face
             } else if y <= tol {
                 continue;
             } else {
-                let (q0, q1) = (along(p0, u, w.b0.to_f64()), along(p0, u, w.b1.to_f64()));
+                let (q0, q1) = (p0 + w.b0.to_f64() * u, p0 + w.b1.to_f64() * u);
                 if inside {
                     Reach::Before(q0, q1)
                 } else {
@@ -247,7 +231,7 @@ pub fn face_subdivision<S: Scalar>(field: &GeodesicField<'_, S>, face: FaceId) -
             };
             match images.iter_mut().find(|m| {
                 m.pseudo_source == w.pseudo_source
-                    && norm(sub(m.position, position)) < tol
+                    && norm(m.position - position) < tol
                     && (m.sigma - sigma).abs() < tol
             }) {
                 Some(m) => {
@@ -306,7 +290,7 @@ fn nearest_image(images: &[Image], x: Point2, tol: f64) -> Option<usize> {
     let mut best: Option<(usize, f64)> = None;
     for (k, m) in images.iter().enumerate() {
         if m.reach.iter().any(|r| reaches(*r, m.position, x)) {
-            let d = norm(sub(x, m.position)) + m.sigma;
+            let d = norm(x - m.position) + m.sigma;
             let better = best.is_none_or(|(j, b)| {
                 d < b - tol * Tol::DISTANCE_TIE
                     || (d <= b + tol * Tol::DISTANCE_TIE && m.sigma < images[j].sigma)
@@ -327,13 +311,13 @@ fn reaches(reach: Reach, s: Point2, x: Point2) -> bool {
         Reach::Beyond(q0, q1) => (q0, q1, true),
         Reach::Before(q0, q1) => (q0, q1, false),
     };
-    let (a, b, d) = (sub(q0, s), sub(q1, s), sub(x, s));
-    let turn = cross(a, b).signum();
-    let within = turn * cross(a, d) >= -Tol::ANGLE * norm(a) * norm(d)
-        && turn * cross(d, b) >= -Tol::ANGLE * norm(b) * norm(d);
+    let (a, b, d) = (q0 - s, q1 - s, x - s);
+    let turn = a.perp_dot(b).signum();
+    let within = turn * a.perp_dot(d) >= -Tol::ANGLE * norm(a) * norm(d)
+        && turn * d.perp_dot(b) >= -Tol::ANGLE * norm(b) * norm(d);
     // Positive on the image's side of the segment's line.
-    let e = sub(q1, q0);
-    let side = cross(e, sub(x, q0)) * cross(e, sub(s, q0)).signum();
+    let e = q1 - q0;
+    let side = e.perp_dot(x - q0) * e.perp_dot(s - q0).signum();
     let slack = Tol::ANGLE * norm(e) * norm(d);
     within
         && if beyond {
@@ -351,12 +335,10 @@ fn trace_region(
     nearest: &dyn Fn(Point2) -> Option<usize>,
 ) -> Vec<Vec<Point2>> {
     let [a, b, c] = face.layout;
-    let centre = [(a[0] + b[0] + c[0]) / 3.0, (a[1] + b[1] + c[1]) / 3.0];
-    let reference = sub(centre, s);
-    let base = reference[1].atan2(reference[0]);
+    let centre = (a + b + c) / 3.0;
+    let base = (centre - s).to_angle();
     let angle_of = |p: Point2| {
-        let d = sub(p, s);
-        let mut t = d[1].atan2(d[0]) - base;
+        let mut t = (p - s).to_angle() - base;
         while t > std::f64::consts::PI {
             t -= std::f64::consts::TAU;
         }
@@ -365,17 +347,17 @@ fn trace_region(
         }
         t
     };
-    let scale = norm(sub(b, a)).max(norm(sub(c, a)));
+    let scale = norm(b - a).max(norm(c - a));
     let outside = !face.face_contains(s, Tol::IN_FACE)
         || face
             .layout
             .iter()
-            .any(|&q| norm(sub(q, s)) < Tol::POINT * scale);
+            .any(|&q| norm(q - s) < Tol::POINT * scale);
     let (lo, hi) = if outside {
         let angles: Vec<f64> = face
             .layout
             .iter()
-            .filter(|&&q| norm(sub(q, s)) > Tol::POINT * scale)
+            .filter(|&&q| norm(q - s) > Tol::POINT * scale)
             .map(|&q| angle_of(q))
             .collect();
         (
@@ -385,13 +367,13 @@ fn trace_region(
     } else {
         (-std::f64::consts::PI, std::f64::consts::PI)
     };
-    let direction = |t: f64| [(base + t).cos(), (base + t).sin()];
+    let direction = |t: f64| DVec2::from_angle(base + t);
     // The part of the ray at angle t in image k's region: (near, far) parameters. By Property 4
     // it starts where the ray enters the face, if anywhere.
     let run = |t: f64| -> Option<(f64, f64, Point2)> {
         let d = direction(t);
         let (near, tb) = clip_ray(face, s, d)?;
-        let inside = |u: f64| nearest(along(s, d, u)) == Some(k);
+        let inside = |u: f64| nearest(s + u * d) == Some(k);
         let step = (tb - near) / Tol::SAMPLES as f64;
         if !inside(near + Tol::FIRST_SAMPLE * (tb - near)) {
             return None;
@@ -436,8 +418,8 @@ fn trace_region(
             if rays.len() < 2 {
                 return None;
             }
-            let mut polygon: Vec<Point2> = rays.iter().map(|&(n, _, d)| along(s, d, n)).collect();
-            polygon.extend(rays.iter().rev().map(|&(_, f, d)| along(s, d, f)));
+            let mut polygon: Vec<Point2> = rays.iter().map(|&(n, _, d)| s + n * d).collect();
+            polygon.extend(rays.iter().rev().map(|&(_, f, d)| s + f * d));
             dedup(&mut polygon, Tol::DEDUP * scale);
             if polygon_area(&polygon) < 0.0 {
                 polygon.reverse();
@@ -449,8 +431,8 @@ fn trace_region(
 }
 
 fn dedup(polygon: &mut Vec<Point2>, tol: f64) {
-    polygon.dedup_by(|a, b| norm(sub(*a, *b)) <= tol);
-    while polygon.len() > 1 && norm(sub(polygon[0], polygon[polygon.len() - 1])) <= tol {
+    polygon.dedup_by(|a, b| norm(*a - *b) <= tol);
+    while polygon.len() > 1 && norm(polygon[0] - polygon[polygon.len() - 1]) <= tol {
         polygon.pop();
     }
 }
@@ -474,10 +456,10 @@ fn clip_ray(face: &FaceSubdivision, s: Point2, d: Point2) -> Option<(f64, f64)> 
     let (mut lo, mut hi) = (0.0f64, f64::INFINITY);
     let [a, b, c] = face.layout;
     for (p, q) in [(a, b), (b, c), (c, a)] {
-        // Inside: cross(q - p, x - p) >= 0, linear in t.
-        let e = sub(q, p);
-        let at0 = cross(e, sub(s, p));
-        let slope = cross(e, d);
+        // Inside: (q - p) perp-dot (x - p) >= 0, linear in t.
+        let e = q - p;
+        let at0 = e.perp_dot(s - p);
+        let slope = e.perp_dot(d);
         if slope.abs() < Tol::PARALLEL {
             if at0 < 0.0 {
                 return None;
@@ -536,7 +518,7 @@ fn bisectors(
     nearest: &dyn Fn(Point2) -> Option<usize>,
 ) -> Vec<Bisector> {
     let [a, b, c] = face.layout;
-    let scale = norm(sub(b, a)).max(norm(sub(c, a)));
+    let scale = norm(b - a).max(norm(c - a));
     let probe = Tol::PROBE * scale;
     let mut out: Vec<Bisector> = Vec::new();
     for (r, (k, polygon)) in traced.iter().enumerate() {
@@ -545,15 +527,13 @@ fn bisectors(
         let beyond: Vec<Option<usize>> = (0..n)
             .map(|i| {
                 let (p, q) = (polygon[i], polygon[(i + 1) % n]);
-                let e = sub(q, p);
+                let e = q - p;
                 let l = norm(e);
                 if l == 0.0 {
                     return None;
                 }
-                let x = [
-                    0.5 * (p[0] + q[0]) + probe * e[1] / l,
-                    0.5 * (p[1] + q[1]) - probe * e[0] / l,
-                ];
+                // Right of the edge, outside the counter-clockwise polygon.
+                let x = 0.5 * (p + q) - probe * e.perp() / l;
                 face.face_contains(x, 0.0)
                     .then(|| nearest(x))
                     .flatten()
@@ -579,7 +559,7 @@ fn bisectors(
             }
             let (mi, mj) = (&images[*k], &images[traced[j].0]);
             let gap = (mi.sigma - mj.sigma).abs();
-            let apart = norm(sub(mi.position, mj.position));
+            let apart = norm(mi.position - mj.position);
             let kind = if gap <= Tol::POINT * scale || (gap - apart).abs() <= Tol::POINT * scale {
                 BisectorKind::Line
             } else {

@@ -44,10 +44,6 @@ fn dijkstra(n: usize, source: usize, neighbours: impl Fn(usize) -> Vec<(usize, f
     best
 }
 
-fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
-    ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
-}
-
 /// Shortest paths along mesh edges from `source`: an upper bound of geodesic distance.
 pub fn edge_graph_dijkstra(mesh: &TriMesh, source: usize) -> Vec<f64> {
     dijkstra(mesh.vertex_count(), source, |u| {
@@ -56,7 +52,7 @@ pub fn edge_graph_dijkstra(mesh: &TriMesh, source: usize) -> Vec<f64> {
             .iter()
             .map(|&e| {
                 let v = mesh.edge(e).other(u).expect("incident edge");
-                (v.index(), distance(mesh.position(u), mesh.position(v)))
+                (v.index(), mesh.position(u).distance(mesh.position(v)))
             })
             .collect()
     })
@@ -73,9 +69,9 @@ fn cross(a: P2, b: P2) -> f64 {
 fn unfold(mesh: &TriMesh, a: usize, b: usize, c: usize, pa: P2, pb: P2, away: Option<P2>) -> P2 {
     let p = |v: usize| mesh.position(VertexId(v as u32));
     let (l, ac, bc) = (
-        distance(p(a), p(b)),
-        distance(p(a), p(c)),
-        distance(p(b), p(c)),
+        p(a).distance(p(b)),
+        p(a).distance(p(c)),
+        p(b).distance(p(c)),
     );
     let x = (l * l + ac * ac - bc * bc) / (2.0 * l);
     let h = (ac * ac - x * x).max(0.0).sqrt();
@@ -118,10 +114,8 @@ fn straight_segments(mesh: &TriMesh, u: usize, max_faces: usize) -> Vec<(usize, 
         let (a, b) = (c[(k + 1) % 3], c[(k + 2) % 3]);
         let pu = [0.0, 0.0];
         let pa = [
-            distance(
-                mesh.position(VertexId(u as u32)),
-                mesh.position(VertexId(a as u32)),
-            ),
+            mesh.position(VertexId(u as u32))
+                .distance(mesh.position(VertexId(a as u32))),
             0.0,
         ];
         let pb = unfold(mesh, u, a, b, pu, pa, None);
@@ -234,10 +228,8 @@ pub fn brute_force_vertex_distances(mesh: &TriMesh, source: usize, max_faces: us
 /// The straight-line distance between two vertices: the geodesic distance on a planar convex
 /// mesh, where the segment between any two points stays on the surface.
 pub fn planar_straight_distance(mesh: &TriMesh, a: usize, b: usize) -> f64 {
-    distance(
-        mesh.position(VertexId(a as u32)),
-        mesh.position(VertexId(b as u32)),
-    )
+    mesh.position(VertexId(a as u32))
+        .distance(mesh.position(VertexId(b as u32)))
 }
 
 /// A uniformly random point of a uniformly random face.

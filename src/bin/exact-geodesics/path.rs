@@ -86,7 +86,7 @@ fn render(path: &GeodesicPath, digits: Option<String>, format: PathFormat) -> St
         PathFormat::Csv => {
             out.push_str("index,x,y,z,simplex\n");
             for (i, (p, s)) in path.points.iter().zip(&path.simplices).enumerate() {
-                writeln!(out, "{i},{},{},{},{}", p[0], p[1], p[2], simplex(s)).expect("String");
+                writeln!(out, "{i},{},{},{},{}", p.x, p.y, p.z, simplex(s)).expect("String");
             }
         }
         PathFormat::Obj => {
@@ -101,7 +101,7 @@ fn render(path: &GeodesicPath, digits: Option<String>, format: PathFormat) -> St
                 writeln!(out, "# geodesic distance, certified digits: {digits}").expect("String");
             }
             for p in &path.points {
-                writeln!(out, "v {} {} {}", p[0], p[1], p[2]).expect("String");
+                writeln!(out, "v {} {} {}", p.x, p.y, p.z).expect("String");
             }
             let ids: Vec<String> = (1..=path.points.len()).map(|i| i.to_string()).collect();
             writeln!(out, "l {}", ids.join(" ")).expect("String");

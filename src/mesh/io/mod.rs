@@ -21,6 +21,7 @@ mod ply;
 pub use error::MeshIoError;
 
 use crate::mesh::{MeshError, TriMesh};
+use glam::DVec3;
 use std::fs::File;
 use std::io::{BufRead, BufReader, BufWriter, Write};
 use std::path::Path;
@@ -167,7 +168,7 @@ const MAX_RESERVE: usize = 1 << 16;
 /// [`TriMesh::new`] can point into the file.
 #[derive(Default)]
 struct Soup {
-    positions: Vec<[f64; 3]>,
+    positions: Vec<DVec3>,
     faces: Vec<[u32; 3]>,
     /// Line of each vertex; empty for binary files.
     vertex_lines: Vec<usize>,
@@ -186,7 +187,7 @@ impl Soup {
         }
     }
 
-    fn push_vertex(&mut self, position: [f64; 3], line: Option<usize>) {
+    fn push_vertex(&mut self, position: DVec3, line: Option<usize>) {
         self.positions.push(position);
         self.vertex_lines.extend(line);
     }
@@ -318,7 +319,7 @@ fn parse_error(file: &str, line: usize, message: impl Into<String>) -> MeshIoErr
 
 /// Parses the first three tokens as a position. NaN and infinities parse, so that
 /// [`TriMesh::new`] refuses them with a clearer message than a syntax error would give.
-fn parse_xyz<'a>(mut tokens: impl Iterator<Item = &'a str>) -> Result<[f64; 3], String> {
+fn parse_xyz<'a>(mut tokens: impl Iterator<Item = &'a str>) -> Result<DVec3, String> {
     let mut p = [0.0; 3];
     for c in &mut p {
         let token = tokens.next().ok_or("a vertex needs x, y and z")?;
@@ -326,11 +327,11 @@ fn parse_xyz<'a>(mut tokens: impl Iterator<Item = &'a str>) -> Result<[f64; 3], 
             .parse()
             .map_err(|_| format!("`{token}` is not a number"))?;
     }
-    Ok(p)
+    Ok(DVec3::from(p))
 }
 
 /// Writes `f64`s in Rust's shortest form that parses back to the same bits (`{:?}` rather than
 /// `{}`, which spells 1e300 with 301 digits).
-fn write_xyz(out: &mut impl Write, prefix: &str, p: [f64; 3]) -> std::io::Result<()> {
-    writeln!(out, "{prefix}{:?} {:?} {:?}", p[0], p[1], p[2])
+fn write_xyz(out: &mut impl Write, prefix: &str, p: DVec3) -> std::io::Result<()> {
+    writeln!(out, "{prefix}{:?} {:?} {:?}", p.x, p.y, p.z)
 }

@@ -6,6 +6,7 @@
 use super::error::corner_problem;
 use super::{parse_error, write_xyz, MeshIoError, PlyEncoding, ReadOptions, Soup, TextLines};
 use crate::mesh::TriMesh;
+use glam::DVec3;
 use std::io::{self, BufRead, Read, Write};
 
 #[derive(Clone, Copy, PartialEq)]
@@ -166,7 +167,7 @@ pub(super) fn read<R: BufRead>(
     let mut reader = Reader {
         soup: &mut soup,
         triangulate: options.triangulate,
-        xyz: [0.0; 3],
+        xyz: DVec3::ZERO,
         corners: Vec::new(),
     };
     // An element without properties takes no space, however many there are.
@@ -409,7 +410,7 @@ impl<R: Read> Values for Binary<R> {
 struct Reader<'s> {
     soup: &'s mut Soup,
     triangulate: bool,
-    xyz: [f64; 3],
+    xyz: DVec3,
     corners: Vec<u32>,
 }
 
@@ -490,7 +491,7 @@ pub(super) fn write(mesh: &TriMesh, out: &mut impl Write, encoding: PlyEncoding)
         }
         PlyEncoding::BinaryLittleEndian => {
             for p in mesh.positions() {
-                for c in p {
+                for c in p.to_array() {
                     out.write_all(&c.to_le_bytes())?;
                 }
             }

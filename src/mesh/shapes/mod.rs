@@ -38,7 +38,7 @@ impl SplitMix64 {
     }
 }
 
-fn build(positions: Vec<[f64; 3]>, faces: Vec<[u32; 3]>) -> TriMesh {
+fn build<P: Into<DVec3>>(positions: Vec<P>, faces: Vec<[u32; 3]>) -> TriMesh {
     TriMesh::new(positions, faces).expect("generated meshes are valid by construction")
 }
 
@@ -52,11 +52,11 @@ pub fn grid(nx: usize, ny: usize, width: f64, height: f64) -> TriMesh {
     let mut positions = Vec::with_capacity((nx + 1) * (ny + 1));
     for j in 0..=ny {
         for i in 0..=nx {
-            positions.push([
+            positions.push(DVec3::new(
                 width * i as f64 / nx as f64,
                 height * j as f64 / ny as f64,
                 0.0,
-            ]);
+            ));
         }
     }
     let id = |i: usize, j: usize| (j * (nx + 1) + i) as u32;
@@ -81,11 +81,11 @@ fn grid_region(
     let mut index = vec![u32::MAX; (cells_x + 1) * (cells_y + 1)];
     let mut positions = Vec::new();
     let mut faces = Vec::new();
-    let mut id = |i: usize, j: usize, positions: &mut Vec<[f64; 3]>| {
+    let mut id = |i: usize, j: usize, positions: &mut Vec<DVec3>| {
         let k = j * (cells_x + 1) + i;
         if index[k] == u32::MAX {
             index[k] = positions.len() as u32;
-            positions.push([i as f64 / n as f64, j as f64 / n as f64, 0.0]);
+            positions.push(DVec3::new(i as f64 / n as f64, j as f64 / n as f64, 0.0));
         }
         index[k]
     };
@@ -134,14 +134,14 @@ pub fn random_convex_triangulation(seed: u64, boundary: usize, interior: usize) 
         .map(|k| (k as f64 + 0.8 * rng.next_f64()) * std::f64::consts::TAU / boundary as f64)
         .collect();
     angles.sort_by(f64::total_cmp);
-    let mut positions: Vec<[f64; 3]> = angles
+    let mut positions: Vec<DVec3> = angles
         .iter()
-        .map(|a| [ax * a.cos(), ay * a.sin(), 0.0])
+        .map(|a| DVec3::new(ax * a.cos(), ay * a.sin(), 0.0))
         .collect();
     let mut faces: Vec<[u32; 3]> = (1..boundary as u32 - 1).map(|k| [0, k, k + 1]).collect();
-    let area2 = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| {
-        let a = DVec3::from(a).truncate();
-        (DVec3::from(b).truncate() - a).perp_dot(DVec3::from(c).truncate() - a)
+    let area2 = |a: DVec3, b: DVec3, c: DVec3| {
+        let a = a.truncate();
+        (b.truncate() - a).perp_dot(c.truncate() - a)
     };
     let mut placed = 0;
     let mut attempts = 0;
@@ -151,7 +151,7 @@ pub fn random_convex_triangulation(seed: u64, boundary: usize, interior: usize) 
             rng.next_f64().sqrt(),
             rng.next_f64() * std::f64::consts::TAU,
         );
-        let p = [0.95 * ax * r * t.cos(), 0.95 * ay * r * t.sin(), 0.0];
+        let p = DVec3::new(0.95 * ax * r * t.cos(), 0.95 * ay * r * t.sin(), 0.0);
         let found = faces.iter().position(|f| {
             let c = f.map(|i| positions[i as usize]);
             let total = area2(c[0], c[1], c[2]);
@@ -295,9 +295,9 @@ pub fn icosahedron() -> TriMesh {
 pub fn icosphere(subdivisions: u32) -> TriMesh {
     let (positions, mut faces) = icosahedron_data();
     let normalise = |p: DVec3| p / p.length();
-    let mut positions: Vec<[f64; 3]> = positions
+    let mut positions: Vec<DVec3> = positions
         .into_iter()
-        .map(|p| normalise(DVec3::from(p)).to_array())
+        .map(|p| normalise(DVec3::from(p)))
         .collect();
     for _ in 0..subdivisions {
         faces = split_in_four(&mut positions, &faces, |p, q| normalise(p + q));
@@ -324,15 +324,15 @@ pub fn subdivide(mesh: &TriMesh) -> TriMesh {
 /// Splits every face `[a, b, c]` into four at new vertices `between(p, q)` on its edges, one
 /// per edge, appended to `positions`.
 fn split_in_four(
-    positions: &mut Vec<[f64; 3]>,
+    positions: &mut Vec<DVec3>,
     faces: &[[u32; 3]],
     between: impl Fn(DVec3, DVec3) -> DVec3,
 ) -> Vec<[u32; 3]> {
     let mut midpoint = std::collections::HashMap::new();
-    let mut mid = |a: u32, b: u32, positions: &mut Vec<[f64; 3]>| {
+    let mut mid = |a: u32, b: u32, positions: &mut Vec<DVec3>| {
         *midpoint.entry((a.min(b), a.max(b))).or_insert_with(|| {
             let (p, q) = (positions[a as usize], positions[b as usize]);
-            positions.push(between(p.into(), q.into()).to_array());
+            positions.push(between(p, q));
             (positions.len() - 1) as u32
         })
     };
@@ -516,25 +516,10 @@ mod tests {
             paper_example1(),
             paper_example3(),
         ] {
-            let centre = mesh
-                .positions()
-                .iter()
-                .fold([0.0; 3], |c, p| [c[0] + p[0], c[1] + p[1], c[2] + p[2]]);
-            let n = mesh.vertex_count() as f64;
-            let centre = centre.map(|c| c / n);
+            let centre = mesh.positions().iter().sum::<DVec3>() / mesh.vertex_count() as f64;
             for f in mesh.faces() {
-                let [a, b, c] = f.map(|i| mesh.positions()[i as usize]);
-                let (u, w) = (
-                    [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
-                    [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
-                );
-                let normal = [
-                    u[1] * w[2] - u[2] * w[1],
-                    u[2] * w[0] - u[0] * w[2],
-                    u[0] * w[1] - u[1] * w[0],
-                ];
-                let out = [a[0] - centre[0], a[1] - centre[1], a[2] - centre[2]];
-                assert!(normal[0] * out[0] + normal[1] * out[1] + normal[2] * out[2] > 0.0);
+                let [a, b, c] = corners(&mesh, f);
+                assert!((b - a).cross(c - a).dot(a - centre) > 0.0);
             }
         }
     }
@@ -570,7 +555,7 @@ mod tests {
         assert_eq!(mesh.validation().boundary_edges, 10);
     }
 
-    fn corners(mesh: &TriMesh, f: &[u32; 3]) -> [[f64; 3]; 3] {
+    fn corners(mesh: &TriMesh, f: &[u32; 3]) -> [DVec3; 3] {
         f.map(|i| mesh.positions()[i as usize])
     }
 
@@ -582,8 +567,7 @@ mod tests {
             .iter()
             .map(|f| {
                 let [a, b, c] = corners(mesh, f);
-                a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
-                    + a[2] * (b[0] * c[1] - b[1] * c[0])
+                a.dot(b.cross(c))
             })
             .sum()
     }
@@ -591,7 +575,7 @@ mod tests {
     /// Twice the signed area of a face's projection on z = 0.
     fn planar_area2(mesh: &TriMesh, f: &[u32; 3]) -> f64 {
         let [a, b, c] = corners(mesh, f);
-        (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+        (b - a).truncate().perp_dot((c - a).truncate())
     }
 
     #[test]
@@ -630,7 +614,7 @@ mod tests {
             assert_eq!(euler(&mesh), 2);
             assert_clean(&mesh);
             for p in mesh.positions() {
-                let r = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt();
+                let r = p.length();
                 assert!((r - 1.0).abs() < 1e-14, "{r}");
             }
         }
@@ -668,19 +652,19 @@ mod tests {
             square_with_hole(2),
             random_convex_triangulation(5, 9, 30),
         ] {
-            assert!(mesh.positions().iter().all(|p| p[2] == 0.0));
+            assert!(mesh.positions().iter().all(|p| p.z == 0.0));
             for f in mesh.faces() {
                 assert!(planar_area2(&mesh, f) > 0.0);
             }
         }
         // The grid's corners and its row-major order.
         let g = grid(4, 3, 2.0, 1.5);
-        assert_eq!(g.positions()[0], [0.0, 0.0, 0.0]);
-        assert_eq!(g.positions()[4], [2.0, 0.0, 0.0]);
-        assert_eq!(g.positions()[5], [0.0, 0.5, 0.0]);
-        assert_eq!(g.positions()[19], [2.0, 1.5, 0.0]);
+        assert_eq!(g.positions()[0], DVec3::new(0.0, 0.0, 0.0));
+        assert_eq!(g.positions()[4], DVec3::new(2.0, 0.0, 0.0));
+        assert_eq!(g.positions()[5], DVec3::new(0.0, 0.5, 0.0));
+        assert_eq!(g.positions()[19], DVec3::new(2.0, 1.5, 0.0));
         // The reflex corner of the L and the hole's corners are vertices.
-        let has = |mesh: &TriMesh, p: [f64; 3]| mesh.positions().contains(&p);
+        let has = |mesh: &TriMesh, p: [f64; 3]| mesh.positions().contains(&p.into());
         assert!(has(&l_shape(3), [1.0, 1.0, 0.0]));
         assert!(!has(&l_shape(3), [2.0, 2.0, 0.0]));
         for p in [
@@ -703,14 +687,14 @@ mod tests {
             // Every boundary corner turns left.
             for k in 0..b {
                 let (a, c, d) = (p[k], p[(k + 1) % b], p[(k + 2) % b]);
-                let turn = (c[0] - a[0]) * (d[1] - a[1]) - (c[1] - a[1]) * (d[0] - a[0]);
+                let turn = (c - a).truncate().perp_dot((d - a).truncate());
                 assert!(turn > 0.0, "seed {seed}: corner {k}");
             }
             // Interior points are strictly inside: left of every boundary edge.
             for q in &p[b..] {
                 for k in 0..b {
                     let (a, c) = (p[k], p[(k + 1) % b]);
-                    let side = (c[0] - a[0]) * (q[1] - a[1]) - (c[1] - a[1]) * (q[0] - a[0]);
+                    let side = (c - a).truncate().perp_dot((*q - a).truncate());
                     assert!(side > 0.0, "seed {seed}");
                 }
             }
@@ -724,10 +708,10 @@ mod tests {
     #[test]
     fn paper_example4_keeps_the_printed_order() {
         let mesh = paper_example4();
-        assert_eq!(mesh.positions()[0], [0.0, 0.0, 0.0]);
-        assert_eq!(mesh.positions()[2], [1.0, 1.0, 0.0]);
-        assert_eq!(mesh.positions()[8], [0.5, -1.8, 0.5]);
-        assert_eq!(mesh.positions()[13], [0.5, 0.5, 2.8]);
+        assert_eq!(mesh.positions()[0], DVec3::new(0.0, 0.0, 0.0));
+        assert_eq!(mesh.positions()[2], DVec3::new(1.0, 1.0, 0.0));
+        assert_eq!(mesh.positions()[8], DVec3::new(0.5, -1.8, 0.5));
+        assert_eq!(mesh.positions()[13], DVec3::new(0.5, 0.5, 2.8));
         assert_eq!(mesh.faces()[0], [0, 3, 8]);
         assert_eq!(mesh.faces()[4], [1, 0, 9]);
         assert_eq!(mesh.faces()[20], [5, 4, 13]);

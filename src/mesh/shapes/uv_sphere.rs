@@ -4,6 +4,7 @@
 
 use super::build;
 use crate::mesh::TriMesh;
+use glam::{DVec2, DVec3};
 use std::f64::consts::PI;
 
 /// The unit sphere cut into `slices` meridians and `stacks` parallels: the north pole
@@ -17,15 +18,15 @@ use std::f64::consts::PI;
 /// `uv_sphere(32, 21)` has as many vertices and faces as `icosphere(3)` (642 and 1280).
 pub fn uv_sphere(slices: usize, stacks: usize) -> TriMesh {
     let (slices, stacks) = (slices.max(3), stacks.max(2));
-    let mut positions = vec![[0.0, 0.0, 1.0]];
+    let mut positions = vec![DVec3::Z];
     for k in 1..stacks {
         let (sin_t, cos_t) = (PI * k as f64 / stacks as f64).sin_cos();
         for i in 0..slices {
-            let (sin_p, cos_p) = (2.0 * PI * i as f64 / slices as f64).sin_cos();
-            positions.push([sin_t * cos_p, sin_t * sin_p, cos_t]);
+            let longitude = DVec2::from_angle(2.0 * PI * i as f64 / slices as f64);
+            positions.push((sin_t * longitude).extend(cos_t));
         }
     }
-    positions.push([0.0, 0.0, -1.0]);
+    positions.push(DVec3::NEG_Z);
     let south = (positions.len() - 1) as u32;
     // Vertex i of ring k (1-based from the north), i taken modulo slices.
     let ring = |k: usize, i: usize| (1 + (k - 1) * slices + i % slices) as u32;
@@ -51,12 +52,11 @@ mod tests {
     fn vertices_lie_on_the_unit_sphere_with_the_poles_first_and_last() {
         let mesh = uv_sphere(7, 4);
         let p = mesh.positions();
-        assert_eq!((p[0], p[p.len() - 1]), ([0.0, 0.0, 1.0], [0.0, 0.0, -1.0]));
+        assert_eq!((p[0], p[p.len() - 1]), (DVec3::Z, DVec3::NEG_Z));
         for q in p {
-            let r = (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]).sqrt();
-            assert!((r - 1.0).abs() < 1e-15, "{q:?}");
+            assert!((q.length() - 1.0).abs() < 1e-15, "{q:?}");
         }
         // Ring 2 of 3 lies on the equator; its vertex 0 at longitude 0.
-        assert!((p[1 + 7][0] - 1.0).abs() < 1e-15 && p[1 + 7][1] == 0.0);
+        assert!((p[1 + 7].x - 1.0).abs() < 1e-15 && p[1 + 7].y == 0.0);
     }
 }
