@@ -182,19 +182,19 @@ impl<S: Scalar> WedgeLists<S> {
                 w.b1.compare(hi) == Ordering::Equal,
             ]
         };
-        // A wedge that keeps two pieces (the new one won in its middle) is trimmed in place for
-        // the first: the second is cut from the wedge as it was, with the anchor of its end.
-        let split: Vec<(u32, Wedge<S>, Provenance<S>)> = pieces
-            .iter()
-            .enumerate()
-            .filter_map(|(i, p)| match p.owner {
-                Owner::Old(id) if pieces[i + 1..].iter().any(|q| q.owner == p.owner) => {
-                    let slot = &self.slots[id as usize];
-                    Some((id, slot.wedge.clone(), slot.kept.clone()))
+        // A wedge that keeps two pieces (the new one won in its middle: three pieces at least)
+        // is trimmed in place for the first: the second is cut from the wedge as it was, with
+        // the anchor of its end (only anchors depend on it).
+        let mut split: Vec<(u32, Wedge<S>, Provenance<S>)> = Vec::new();
+        if pieces.len() >= 3 {
+            for (i, p) in pieces.iter().enumerate() {
+                let Owner::Old(id) = p.owner else { continue };
+                let slot = &self.slots[id as usize];
+                if anchored(&slot.kept) && pieces[i + 1..].iter().any(|q| q.owner == p.owner) {
+                    split.push((id, slot.wedge.clone(), slot.kept.clone()));
                 }
-                _ => None,
-            })
-            .collect();
+            }
+        }
         for piece in pieces.drain(..) {
             if !S::has_extent(&piece.lo, &piece.hi, length) {
                 continue;
