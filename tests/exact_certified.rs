@@ -7,19 +7,52 @@ mod common;
 use common::cli::{fails_with, run, stdout, temp_file};
 use exact_geodesics::mesh::shapes;
 use exact_geodesics::scalar::{Field, Real, Ring, Sign};
-use exact_geodesics::{propagate, PropagateOptions, SurfacePoint, TriMesh, VertexId};
+use exact_geodesics::{propagate, PropagateOptions, Stats, SurfacePoint, TriMesh, VertexId};
+
+/// A seeded linear congruential draw, uniform in `[0, 1)`.
+fn draws(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed;
+    move || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// Propagates from `source` in the exact backend and in f64; asserts that the exact run left
+/// no decision uncertified and that both give every vertex the same distance within 1e-12
+/// relative. Returns the exact run's statistics. `case` names the run in messages.
+fn assert_certified_and_agrees_with_f64(mesh: &TriMesh, source: SurfacePoint, case: &str) -> Stats {
+    let options = PropagateOptions::default();
+    let exact = propagate::<Real>(mesh, &[source], &options).expect("a vertex source");
+    let counts = &exact.stats().backend;
+    assert!(
+        exact.is_certified() && counts.uncertified == 0,
+        "{case}: {} of {} decisions uncertified: {:?}",
+        counts.uncertified,
+        counts.decisions,
+        counts.uncertified_sites.first()
+    );
+    let float = propagate::<f64>(mesh, &[source], &options).expect("a vertex source");
+    for v in 0..mesh.vertex_count() as u32 {
+        let (d, e) = (
+            float.vertex_distance(VertexId(v)),
+            exact.vertex_distance(VertexId(v)),
+        );
+        assert!(
+            (d - e).abs() <= 1e-12 * e.max(1.0),
+            "{case}, v{v}: f64 {d} against exact {e}"
+        );
+    }
+    exact.stats().clone()
+}
 
 /// An icosphere whose vertices are moved radially by up to 2 % (a seeded linear congruential
 /// draw): float coordinates with no symmetry and no rational structure, and saddle vertices.
 fn jittered_icosphere(level: u32, seed: u64) -> TriMesh {
     let sphere = shapes::icosphere(level);
-    let mut state = seed;
-    let mut draw = || {
-        state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut draw = draws(seed);
     let positions = sphere
         .positions()
         .iter()
@@ -35,32 +68,12 @@ fn jittered_icosphere(level: u32, seed: u64) -> TriMesh {
 fn a_jittered_icosphere_is_certified_and_agrees_with_f64() {
     for (level, seed) in [(1, 7), (2, 11)] {
         let mesh = jittered_icosphere(level, seed);
-        let source = [SurfacePoint::Vertex(VertexId(0))];
-        let options = PropagateOptions::default();
-        let exact = propagate::<Real>(&mesh, &source, &options).expect("a vertex source");
-        let counts = &exact.stats().backend;
+        let source = SurfacePoint::Vertex(VertexId(0));
+        let stats = assert_certified_and_agrees_with_f64(&mesh, source, &format!("level {level}"));
         assert!(
-            exact.is_certified() && counts.uncertified == 0,
-            "level {level}: {} of {} decisions uncertified: {:?}",
-            counts.uncertified,
-            counts.decisions,
-            counts.uncertified_sites.first()
-        );
-        assert!(
-            counts.zeros_by_structure > 0,
+            stats.backend.zeros_by_structure > 0,
             "the identities are proved by structure"
         );
-        let float = propagate::<f64>(&mesh, &source, &options).expect("a vertex source");
-        for v in 0..mesh.vertex_count() as u32 {
-            let (d, e) = (
-                float.vertex_distance(VertexId(v)),
-                exact.vertex_distance(VertexId(v)),
-            );
-            assert!(
-                (d - e).abs() <= 1e-12 * e.max(1.0),
-                "level {level}, v{v}: f64 {d} against exact {e}"
-            );
-        }
     }
 }
 
@@ -69,13 +82,7 @@ fn a_jittered_icosphere_is_certified_and_agrees_with_f64() {
 /// linear congruential draw): a terrain with many saddle vertices, so that pseudo-sources meet
 /// the wedges that lit them, and no symmetry.
 fn random_terrain(n: u32, seed: u64) -> TriMesh {
-    let mut state = seed;
-    let mut draw = || {
-        state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut draw = draws(seed);
     let mut positions = Vec::new();
     for j in 0..=n {
         for i in 0..=n {
@@ -110,28 +117,10 @@ fn random_terrains_with_saddles_are_certified_and_agree_with_f64() {
     let runs = (1..=8).flat_map(|seed| [0, 17, 40, 80].map(|source| (seed, source)));
     for (seed, v) in runs {
         let mesh = random_terrain(8, seed);
-        let source = [SurfacePoint::Vertex(VertexId(v))];
-        let options = PropagateOptions::default();
-        let exact = propagate::<Real>(&mesh, &source, &options).expect("a vertex source");
-        let stats = exact.stats();
-        assert!(stats.pseudo_source_emissions > 0, "seed {seed}: no saddle");
-        assert_eq!(
-            stats.backend.uncertified,
-            0,
-            "seed {seed}, source v{v}: {:?}",
-            stats.backend.uncertified_sites.first()
-        );
-        let float = propagate::<f64>(&mesh, &source, &options).expect("a vertex source");
-        for u in 0..mesh.vertex_count() as u32 {
-            let (d, e) = (
-                float.vertex_distance(VertexId(u)),
-                exact.vertex_distance(VertexId(u)),
-            );
-            assert!(
-                (d - e).abs() <= 1e-12 * e.max(1.0),
-                "seed {seed}, source v{v}: f64 {d} against exact {e} at v{u}"
-            );
-        }
+        let source = SurfacePoint::Vertex(VertexId(v));
+        let case = format!("seed {seed}, source v{v}");
+        let stats = assert_certified_and_agrees_with_f64(&mesh, source, &case);
+        assert!(stats.pseudo_source_emissions > 0, "{case}: no saddle");
     }
 }
 
@@ -139,13 +128,8 @@ fn random_terrains_with_saddles_are_certified_and_agree_with_f64() {
 /// to 0.15 (a seeded draw); with `fold`, the part beyond x = n/2 is bent up along that line by
 /// the slope 1/2, exactly (a crease of CAD meshes: two planes, every face exactly in one).
 fn plate(n: u32, seed: u64, fold: bool) -> TriMesh {
-    let mut state = seed;
-    let mut draw = || {
-        state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    };
+    let mut uniform = draws(seed);
+    let mut draw = || uniform() - 0.5;
     let half = f64::from(n / 2);
     let mut positions = Vec::new();
     for j in 0..=n {
@@ -205,27 +189,8 @@ fn distances_on_a_flat_float_plate_are_proved_straight() {
 fn a_folded_float_plate_is_certified_and_agrees_with_f64() {
     for seed in [1, 2] {
         let mesh = plate(10, seed, true);
-        let source = [SurfacePoint::Vertex(VertexId(0))];
-        let options = PropagateOptions::default();
-        let exact = propagate::<Real>(&mesh, &source, &options).expect("a vertex source");
-        let counts = &exact.stats().backend;
-        assert_eq!(
-            counts.uncertified,
-            0,
-            "seed {seed}: {:?}",
-            counts.uncertified_sites.first()
-        );
-        let float = propagate::<f64>(&mesh, &source, &options).expect("a vertex source");
-        for v in 0..mesh.vertex_count() as u32 {
-            let (d, e) = (
-                float.vertex_distance(VertexId(v)),
-                exact.vertex_distance(VertexId(v)),
-            );
-            assert!(
-                (d - e).abs() <= 1e-12 * e.max(1.0),
-                "seed {seed}, v{v}: {d} against {e}"
-            );
-        }
+        let source = SurfacePoint::Vertex(VertexId(0));
+        assert_certified_and_agrees_with_f64(&mesh, source, &format!("seed {seed}"));
     }
 }
 
