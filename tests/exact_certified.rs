@@ -340,6 +340,15 @@ mod zero_proofs {
         );
     }
 
+    /// A rotation whose radius is rational (x = 666/7, y = 120/11, r = 7374/77) folds into
+    /// rationals: its zero is a rational value, named as such, not a filter's word (a case
+    /// the proptest below once drew).
+    #[test]
+    fn a_rotation_with_a_rational_radius_is_a_proved_zero() {
+        let (x, y) = (q(666, 7), q(120, 11));
+        assert_proved_zero(&rotation_gap(&x, &x, &y, [&q(1, 13), &q(1, 3)]));
+    }
+
     fn assert_positive_not_zero(value: &Real) {
         let (sign, certificate) = value.certified_sign();
         assert!(

@@ -144,24 +144,8 @@ impl Real {
         if let Err(cause) = check_divisors(node) {
             return (Sign::Zero, Certificate::Uncertified(cause));
         }
-        if node.structural_zero {
-            return (Sign::Zero, Certificate::CertifiedZero(ZeroProof::Structure));
-        }
-        if let Some(s) = node.filter.sign() {
-            return (s, Certificate::Filter);
-        }
-        if !node.has_sqrt {
-            let sign = match refine::rational_value(node).cmp0() {
-                Ordering::Less => Sign::Negative,
-                Ordering::Equal => {
-                    return (
-                        Sign::Zero,
-                        Certificate::CertifiedZero(ZeroProof::RationalValue),
-                    )
-                }
-                Ordering::Greater => Sign::Positive,
-            };
-            return (sign, Certificate::Refinement);
+        if let Some(settled) = self.settled_without_refinement() {
+            return settled;
         }
         let (lo, hi) = refine::enclosure(node, FIRST_PRECISION);
         if lo.cmp0() == Some(Ordering::Greater) {
@@ -275,25 +259,40 @@ impl Real {
         None
     }
 
-    /// The sign and its certificate where it is clear without a search for a proof of zero:
-    /// divisors checked, then a structural zero, the filter, a rational value, or refinement
-    /// within [`CLEAR_PRECISION`] bits. `None` otherwise (the value may be zero).
-    fn clear_certified_sign(&self) -> Option<(Sign, Certificate)> {
+    /// The sign and its certificate from the first stages, which need no refinement (a value
+    /// whose divisors are certified non-zero): a structural zero, a filter away from zero, or
+    /// the exact rational value of a DAG without square roots. `None` if they cannot tell.
+    fn settled_without_refinement(&self) -> Option<(Sign, Certificate)> {
         let node = &self.0;
-        if check_divisors(node).is_err() {
-            return None;
-        }
         if node.structural_zero {
             return Some((Sign::Zero, Certificate::CertifiedZero(ZeroProof::Structure)));
         }
-        if let Some(s) = node.filter.sign() {
+        // A filter of exactly zero is left to the stages that name a proof of zero.
+        if let Some(s) = node.filter.sign().filter(|&s| s != Sign::Zero) {
             return Some((s, Certificate::Filter));
         }
-        if !node.has_sqrt {
-            return Some(self.certified_sign());
+        if node.has_sqrt {
+            return None;
         }
-        self.refined_away_from_zero()
-            .map(|s| (s, Certificate::Refinement))
+        Some(match refine::rational_value(node).cmp0() {
+            Ordering::Less => (Sign::Negative, Certificate::Refinement),
+            Ordering::Equal => (
+                Sign::Zero,
+                Certificate::CertifiedZero(ZeroProof::RationalValue),
+            ),
+            Ordering::Greater => (Sign::Positive, Certificate::Refinement),
+        })
+    }
+
+    /// The sign and its certificate where it is clear without a search for a proof of zero:
+    /// divisors checked, then the first stages ([`Self::settled_without_refinement`]), or
+    /// refinement within [`CLEAR_PRECISION`] bits. `None` otherwise (the value may be zero).
+    fn clear_certified_sign(&self) -> Option<(Sign, Certificate)> {
+        check_divisors(&self.0).ok()?;
+        self.settled_without_refinement().or_else(|| {
+            self.refined_away_from_zero()
+                .map(|s| (s, Certificate::Refinement))
+        })
     }
 
     /// An `f64` enclosure of the value (from the filter, or refined when the filter is wide).
