@@ -77,6 +77,21 @@ fn a_jittered_icosphere_is_certified_and_agrees_with_f64() {
     }
 }
 
+/// The faces of an `n` x `n` grid of squares whose `(n + 1)^2` vertices are numbered row by
+/// row, each square split by its diagonal from its first corner.
+fn lattice_faces(n: u32) -> Vec<[u32; 3]> {
+    let mut faces = Vec::new();
+    for j in 0..n {
+        for i in 0..n {
+            let a = j * (n + 1) + i;
+            let (b, c) = (a + 1, a + n + 1);
+            faces.push([a, b, c + 1]);
+            faces.push([a, c + 1, c]);
+        }
+    }
+    faces
+}
+
 /// An `n` x `n` grid of squares over the unit lattice, each split by a diagonal, with its
 /// vertices moved by up to 0.15 in x and y and lifted to random heights below 0.8 (a seeded
 /// linear congruential draw): a terrain with many saddle vertices, so that pseudo-sources meet
@@ -91,16 +106,7 @@ fn random_terrain(n: u32, seed: u64) -> TriMesh {
             positions.push([x, y, 0.8 * draw()]);
         }
     }
-    let mut faces = Vec::new();
-    for j in 0..n {
-        for i in 0..n {
-            let a = j * (n + 1) + i;
-            let (b, c) = (a + 1, a + n + 1);
-            faces.push([a, b, c + 1]);
-            faces.push([a, c + 1, c]);
-        }
-    }
-    TriMesh::new(positions, faces).expect("a terrain is a mesh")
+    TriMesh::new(positions, lattice_faces(n)).expect("a terrain is a mesh")
 }
 
 /// Two identities of saddle vertices, each once left to arithmetic that cannot settle it:
@@ -145,16 +151,7 @@ fn plate(n: u32, seed: u64, fold: bool) -> TriMesh {
             positions.push([x, y, z]);
         }
     }
-    let mut faces = Vec::new();
-    for j in 0..n {
-        for i in 0..n {
-            let a = j * (n + 1) + i;
-            let (b, c) = (a + 1, a + n + 1);
-            faces.push([a, b, c + 1]);
-            faces.push([a, c + 1, c]);
-        }
-    }
-    TriMesh::new(positions, faces).expect("a plate is a mesh")
+    TriMesh::new(positions, lattice_faces(n)).expect("a plate is a mesh")
 }
 
 /// On a flat plate with float coordinates (a convex region of one plane), the exact distance of
