@@ -10,7 +10,8 @@
 //! 3. a zero is certified by structure (`x - x` of two copies of one expression), by exact
 //!    rational evaluation, by a zero normal form in a tower of quadratic extensions, or when
 //!    the enclosure is smaller than the BFMSS separation bound \[BFMSS01\] (a non-zero value
-//!    cannot be that small);
+//!    cannot be that small); last, by a zero normal form in which the subexpressions too
+//!    large to expand are indeterminates (an identity whatever their values);
 //! 4. a decision that reaches the precision cap (this thread's: [`set_precision_cap`], or the
 //!    run's: [`PropagateOptions::precision_cap`](crate::PropagateOptions)) without either is
 //!    *uncertified*: the value is then within `2^-cap` of zero, it is treated as zero (a tie),
@@ -180,6 +181,12 @@ impl Real {
                 }
             }
             if precision >= cap {
+                if normal_form::zero_over_atoms(node) {
+                    return (
+                        Sign::Zero,
+                        Certificate::CertifiedZero(ZeroProof::NormalForm),
+                    );
+                }
                 return (
                     Sign::Zero,
                     Certificate::Uncertified(Uncertainty::PrecisionCap(precision)),
@@ -713,6 +720,30 @@ mod tests {
         // Not a square in Q(sqrt 2): no false denesting.
         let other = (int(3) + &int(2).sqrt()).sqrt() - &int(1) - &int(2).sqrt();
         assert_ne!(other.certified_sign().0, Sign::Zero);
+    }
+
+    #[test]
+    fn an_identity_over_an_expression_too_large_to_expand_is_proved_over_atoms() {
+        // X = (1 + sqrt 3)(1 + sqrt 5)...(1 + sqrt 31): 1,024 terms, past the normal form's
+        // size, and 11 square roots put the separation bound past the cap. The identity
+        // (X + sqrt 2)^2 - X^2 - 2 sqrt(2) X - 2 = 0 holds whatever X is.
+        let deep = [3, 5, 7, 11, 13, 17, 19, 23, 29, 31]
+            .into_iter()
+            .fold(int(1), |x, p| x * &(int(1) + &int(p).sqrt()));
+        let r2 = int(2).sqrt();
+        let sum = deep.clone() + &r2;
+        let identity =
+            sum.clone() * &sum - &(deep.clone() * &deep) - &(int(2) * &r2 * &deep) - &int(2);
+        assert_eq!(identity.certified_sign(), normal_form_zero());
+        // Off by 2^-9000, below what refinement within the cap can see: not called zero.
+        let tiny = Real::from_rational(
+            Rational::new(Integer::from(1), Integer::from(2).pow(9000)).unwrap(),
+        );
+        let (_, certificate) = (identity + &tiny).certified_sign();
+        assert!(
+            matches!(certificate, Certificate::Uncertified(_)),
+            "{certificate:?}"
+        );
     }
 
     #[test]

@@ -12,6 +12,11 @@
 //! The normal form is unique only when the symbols are independent, which is not checked: a
 //! zero normal form proves the value zero; a non-zero one proves nothing, and the refinement
 //! with the separation bound takes over. Normal forms that grow past [`MAX_TERMS`] give up.
+//!
+//! A last resort ([`zero_over_atoms`]) writes every subexpression too large to expand as an
+//! *atom*, an indeterminate: the identities MMP creates are mostly local (a pseudo-source's
+//! tangency with the image that lit it, across the faces between them), and they hold whatever
+//! value the deep unfoldings below give the image.
 
 use super::super::bignum::{Integer, Rational};
 use super::node::{Node, Op};
@@ -45,7 +50,8 @@ thread_local! {
 /// tower it was computed in.
 static NEXT_TOWER: AtomicU64 = AtomicU64::new(0);
 
-/// A product of distinct symbols, in increasing order.
+/// A product of symbols, in increasing order: square roots at most once each (their squares
+/// are rewritten), atoms as often as their power.
 type Monomial = Vec<u32>;
 
 /// An element of the tower in normal form.
@@ -54,7 +60,11 @@ pub(crate) struct NormalForm(BTreeMap<Monomial, Rational>);
 
 struct Tower {
     id: u64,
-    squares: Vec<NormalForm>,
+    /// The square of each symbol; `None` for an atom.
+    squares: Vec<Option<NormalForm>>,
+    /// The atoms, by the address of the node each stands for (held, so that the address is
+    /// not reused while the tower lives).
+    atoms: HashMap<usize, (u32, Arc<Node>)>,
     /// The symbols of integer radicals, by square class ([`square_class`]): radicals whose
     /// product is a square are one symbol, up to a rational factor.
     integer_radicals: HashMap<u64, Vec<(Integer, u32)>>,
@@ -66,6 +76,7 @@ impl Tower {
         Tower {
             id: NEXT_TOWER.fetch_add(1, Ordering::Relaxed),
             squares: Vec::new(),
+            atoms: HashMap::new(),
             integer_radicals: HashMap::new(),
             radicals: HashMap::new(),
         }
@@ -82,8 +93,13 @@ fn tower_id() -> u64 {
     TOWER.with(|t| t.borrow().id)
 }
 
-fn square_of(symbol: u32) -> NormalForm {
+/// The square of a symbol; `None` for an atom, which has no relation.
+fn square_of(symbol: u32) -> Option<NormalForm> {
     TOWER.with(|t| t.borrow().squares[symbol as usize].clone())
+}
+
+fn is_atom(symbol: u32) -> bool {
+    TOWER.with(|t| t.borrow().squares[symbol as usize].is_none())
 }
 
 impl NormalForm {
@@ -166,7 +182,11 @@ impl NormalForm {
                 while i < m1.len() || j < m2.len() {
                     match (m1.get(i), m2.get(j)) {
                         (Some(a), Some(b)) if a == b => {
-                            common.push(*a);
+                            if is_atom(*a) {
+                                product.extend([*a, *b]);
+                            } else {
+                                common.push(*a);
+                            }
                             i += 1;
                             j += 1;
                         }
@@ -187,7 +207,7 @@ impl NormalForm {
                 }
                 let mut term = NormalForm::monomial(c1.clone() * c2, product);
                 for s in common {
-                    term = term.mul(&square_of(s))?;
+                    term = term.mul(&square_of(s)?)?;
                 }
                 sum.accumulate(&term, 1);
                 if sum.0.len() > MAX_TERMS {
@@ -202,8 +222,12 @@ impl NormalForm {
         let (mut num, mut den) = (self.clone(), other.clone());
         // Multiply by conjugates until the denominator is rational: with `den = p + q s` for
         // its largest symbol `s`, `(p + q s)(p - q s) = p^2 - q^2 square(s)` is free of `s`.
+        // An atom has no conjugate: a quotient by it is not a polynomial.
         while den.as_rational().is_none() {
             let s = *den.0.keys().filter_map(|m| m.last()).max()?;
+            if is_atom(s) {
+                return None;
+            }
             let conjugate = NormalForm(
                 den.0
                     .iter()
@@ -243,7 +267,7 @@ impl NormalForm {
                 Some(&id) => id,
                 None => {
                     let id = t.squares.len() as u32;
-                    t.squares.push(self.clone());
+                    t.squares.push(Some(self.clone()));
                     t.radicals.insert(self.clone(), id);
                     id
                 }
@@ -304,7 +328,7 @@ impl NormalForm {
         let (m, q) = self.0.iter().find(|(m, _)| !m.is_empty())?;
         let mut d = Rational::from(1);
         for &s in m {
-            d = d * &square_of(s).as_rational()?;
+            d = d * &square_of(s)?.as_rational()?;
         }
         let c2 = p.clone() * p - &(q.clone() * q * &d);
         if p.cmp0().is_le() || c2.cmp0().is_lt() {
@@ -361,7 +385,7 @@ fn sqrt_of_rational(r: &Rational) -> NormalForm {
             None => {
                 let id = t.squares.len() as u32;
                 t.squares
-                    .push(NormalForm::rational(Rational::from(m.clone())));
+                    .push(Some(NormalForm::rational(Rational::from(m.clone()))));
                 t.integer_radicals.entry(class).or_default().push((m, id));
                 (id, Rational::from(1))
             }
@@ -375,6 +399,52 @@ fn sqrt_of_rational(r: &Rational) -> NormalForm {
 pub(crate) fn normal_form(node: &Arc<Node>) -> Option<NormalForm> {
     WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
     memoized(node)
+}
+
+/// Whether the node's normal form over atoms is zero: every subexpression whose normal form
+/// cannot be had (too large, or a square root of a radicand not shown positive) or has more
+/// than [`ATOM_TERMS`] terms is an atom, an indeterminate. A zero there is zero for every value
+/// of the atoms, so it proves the value zero (an atom is never divided by, and a square root
+/// over atoms is a symbol only where its radicand is shown positive). Costly on deep
+/// expressions: asked only of a zero that nothing else could prove.
+pub(crate) fn zero_over_atoms(node: &Arc<Node>) -> bool {
+    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
+    over_atoms(node).is_zero()
+}
+
+/// Normal forms over atoms larger than this make their node an atom: the local identities
+/// need only a few terms above the atoms, and a smaller atom keeps the work per test small.
+const ATOM_TERMS: usize = 64;
+
+/// The node's normal form over atoms, memoized on the node with the tower's id.
+fn over_atoms(node: &Arc<Node>) -> NormalForm {
+    let tower = tower_id();
+    if let Some((id, nf)) = node.atom_form.lock().expect("memo lock").as_ref() {
+        if *id == tower {
+            return nf.clone();
+        }
+    }
+    let nf = compute_with(node, |child| Some(over_atoms(child)))
+        .filter(|nf| nf.0.len() <= ATOM_TERMS)
+        .unwrap_or_else(|| atom(node));
+    *node.atom_form.lock().expect("memo lock") = Some((tower, nf.clone()));
+    nf
+}
+
+/// The atom standing for the node's value.
+fn atom(node: &Arc<Node>) -> NormalForm {
+    let key = Arc::as_ptr(node) as usize;
+    let id = TOWER.with(|t| {
+        let mut t = t.borrow_mut();
+        if let Some((id, _)) = t.atoms.get(&key) {
+            return *id;
+        }
+        let id = t.squares.len() as u32;
+        t.squares.push(None);
+        t.atoms.insert(key, (id, node.clone()));
+        id
+    });
+    NormalForm::monomial(Rational::from(1), vec![id])
 }
 
 /// The node's normal form in this thread's tower, memoized on the node with the tower's id.
@@ -391,15 +461,23 @@ fn memoized(node: &Arc<Node>) -> Option<NormalForm> {
 }
 
 fn compute(node: &Arc<Node>) -> Option<NormalForm> {
+    compute_with(node, memoized)
+}
+
+/// The node's normal form from its children's, as `form` gives them.
+fn compute_with(
+    node: &Arc<Node>,
+    form: impl Fn(&Arc<Node>) -> Option<NormalForm>,
+) -> Option<NormalForm> {
     match &node.op {
         Op::Leaf(r) => Some(NormalForm::rational(r.clone())),
-        Op::Add(a, b) => memoized(a)?.add(&memoized(b)?, 1),
-        Op::Sub(a, b) => memoized(a)?.add(&memoized(b)?, -1),
-        Op::Mul(a, b) => memoized(a)?.mul(&memoized(b)?),
-        Op::Div(a, b) => memoized(a)?.div(&memoized(b)?),
-        Op::Neg(a) => Some(memoized(a)?.neg()),
+        Op::Add(a, b) => form(a)?.add(&form(b)?, 1),
+        Op::Sub(a, b) => form(a)?.add(&form(b)?, -1),
+        Op::Mul(a, b) => form(a)?.mul(&form(b)?),
+        Op::Div(a, b) => form(a)?.div(&form(b)?),
+        Op::Neg(a) => Some(form(a)?.neg()),
         Op::Sqrt(a) => {
-            let radicand = memoized(a)?;
+            let radicand = form(a)?;
             // The node is sqrt(max(a, 0)): the symbol stands for it only if a > 0 (or a = 0).
             if radicand.is_zero() {
                 return Some(NormalForm::default());
