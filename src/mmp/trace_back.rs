@@ -123,9 +123,15 @@ impl<S: Scalar> GeodesicField<'_, S> {
     pub fn trace_back_exact(&self, target: &SurfacePoint) -> Result<ExactPath<S>, TraceError> {
         let (trail, distance, source) = self.trace(target)?;
         let offsets = trail
-            .offsets
+            .points
             .iter()
-            .map(|x| x.as_ref().map(|x| self.to_model(x)))
+            .zip(&trail.offsets)
+            .map(|(p, x)| match (p, x) {
+                (SurfacePoint::Edge { edge, .. }, Some(x)) => {
+                    Some(self.to_model(&self.unfolding.offset_from_first_vertex(*edge, x)))
+                }
+                _ => None,
+            })
             .collect();
         Ok(ExactPath {
             path: self.path_of(trail.points, &distance, source),
@@ -318,8 +324,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             consider(self.best_through_edge(edge, face, &at, beyond));
         }
         for &edge in self.mesh().vertex_edges(v) {
-            let e = self.mesh().edge(edge);
-            let x = if e.vertices[0] == v {
+            let x = if self.unfolding.ends(self.mesh(), edge)[0] == v {
                 S::zero()
             } else {
                 self.unfolding.length(edge).clone()
@@ -404,7 +409,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 _ => false,
             };
             if !named_on_edge {
-                simplices.push_edge(edge, &at.x, self.unfolding.length(edge));
+                simplices.push_edge(self.unfolding.edge_point(edge, &at.x), &at.x);
             }
             return Ok(Step::Walk(Walk {
                 edge,
@@ -428,8 +433,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         if let Some(v) = self.end_vertex(edge, &x) {
             return Ok(Step::Vertex(v));
         }
-        let length = self.unfolding.length(edge);
-        simplices.push_edge(edge, &x, length);
+        simplices.push_edge(self.unfolding.edge_point(edge, &x), &x);
         let beyond = wedge_face()?;
         Ok(Step::Walk(Walk {
             edge,
@@ -443,7 +447,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// The end of `edge` at position `x`, if the backend cannot tell `x` from it.
     fn end_vertex(&self, edge: EdgeId, x: &S) -> Option<VertexId> {
         let length = self.unfolding.length(edge);
-        let [v0, v1] = self.mesh().edge(edge).vertices;
+        let [v0, v1] = self.unfolding.ends(self.mesh(), edge);
         if !S::has_extent(&S::zero(), x, length) {
             Some(v0)
         } else if !S::has_extent(x, length, length) {
@@ -511,7 +515,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             // From a corner of the face the line leaves by the opposite side; from elsewhere,
             // by the side the apex is on.
             // A start at a vertex at the same place as a corner starts from that corner.
-            let [p0, p1] = self.mesh().edge(walk.edge).vertices;
+            let [p0, p1] = self.unfolding.ends(self.mesh(), walk.edge);
             let start = walk.start.map(|v| self.twins(v));
             let starts_at =
                 |p: VertexId| start.as_ref().is_some_and(|g| g.iter().any(|t| t.0 == p));
@@ -526,7 +530,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             if let Some(v) = end {
                 return Ok(WalkEnd::Vertex(v));
             }
-            simplices.push_edge(next_edge, &position, self.unfolding.length(next_edge));
+            simplices.push_edge(self.unfolding.edge_point(next_edge, &position), &position);
             if self.mesh().side_count(next_edge) > 2 {
                 return Ok(WalkEnd::Edge {
                     edge: next_edge,
@@ -612,10 +616,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 if !self.unfolding.is_inside(g, &on) {
                     continue;
                 }
-                let here = (
-                    edge_point(g, &on.x, self.unfolding.length(g)),
-                    Some(on.x.clone()),
-                );
+                let here = (self.unfolding.edge_point(g, &on.x), Some(on.x.clone()));
                 for beyond in self.mesh().edge_faces(g) {
                     if reached.iter().all(|(r, _)| *r != beyond) {
                         reached.push((beyond, Some((next, here.clone()))));
@@ -626,11 +627,6 @@ impl<S: Scalar> GeodesicField<'_, S> {
         }
         None
     }
-}
-
-fn edge_point<S: Scalar>(edge: EdgeId, x: &S, length: &S) -> SurfacePoint {
-    let t = (x.clone() / length).to_f64().clamp(0.0, 1.0);
-    SurfacePoint::Edge { edge, t }
 }
 
 /// A point of a trail and, on an edge, its offset along the edge in the number type.
@@ -659,9 +655,9 @@ impl<S: Scalar> Trail<S> {
         self.push_at(p, None);
     }
 
-    /// Appends the point at `x` along `edge` (of length `length`).
-    fn push_edge(&mut self, edge: EdgeId, x: &S, length: &S) {
-        self.push_at(edge_point(edge, x, length), Some(x.clone()));
+    /// Appends the point `p` of an edge, at position `x` in the edge's frame.
+    fn push_edge(&mut self, p: SurfacePoint, x: &S) {
+        self.push_at(p, Some(x.clone()));
     }
 
     fn push_at(&mut self, p: SurfacePoint, offset: Option<S>) {

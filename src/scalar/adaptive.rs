@@ -196,6 +196,11 @@ impl Scalar for Adaptive {
     }
 
     #[inline(always)]
+    fn frames_from_nearer_end() -> bool {
+        true
+    }
+
+    #[inline(always)]
     fn sign(&self) -> Sign {
         sign_of(self.0)
     }

@@ -64,6 +64,11 @@ impl Scalar for f64 {
     }
 
     #[inline(always)]
+    fn frames_from_nearer_end() -> bool {
+        true
+    }
+
+    #[inline(always)]
     fn sign(&self) -> Sign {
         if *self > 0.0 {
             Sign::Positive
