@@ -695,8 +695,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
         // An edge of length zero (coincident corners) carries no wedge; its face passes rays
         // on to its other edge unchanged.
         if side0 == Ordering::Less && !self.unfolding.is_zero_length(near) {
+            let [at_first, at_apex_t] = layout.near_ends();
             let (t0, a0) = if at_v0 {
-                (zero.clone(), None)
+                (at_first, None)
             } else {
                 let a0 = anchor_on(near, 0, &to_near);
                 (clamp(layout.near_hit(from(0), &w.b0)), a0)
@@ -705,7 +706,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 let a1 = anchor_on(near, 1, &to_near);
                 (clamp(layout.near_hit(from(1), &w.b1)), a1)
             } else {
-                (one.clone(), None)
+                (at_apex_t, None)
             };
             let positions = [layout.near_position(&t0), layout.near_position(&t1)];
             let ends = if layout.near_reversed {
@@ -718,14 +719,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
             children[0] = Some((near, positions, at, kept));
         }
         if side1 == Ordering::Greater && !self.unfolding.is_zero_length(far) {
+            let [at_apex_u, at_second] = layout.far_ends();
             let (u0, a0) = if side0 == Ordering::Greater {
                 let a0 = anchor_on(far, 0, &to_far);
                 (clamp(layout.far_hit(from(0), &w.b0)), a0)
             } else {
-                (zero.clone(), None)
+                (at_apex_u, None)
             };
             let (u1, a1) = if at_v1 {
-                (one.clone(), None)
+                (at_second, None)
             } else {
                 let a1 = anchor_on(far, 1, &to_far);
                 (clamp(layout.far_hit(from(1), &w.b1)), a1)

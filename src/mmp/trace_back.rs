@@ -500,7 +500,13 @@ impl<S: Scalar> GeodesicField<'_, S> {
             // vertices[0] to the apex) or by the far edge (from the apex to vertices[1]).
             let exit = |near: bool| {
                 if near {
-                    let t = clamp(cross(r.x.clone(), r.y.clone()) / cross(cx.clone(), cy.clone()));
+                    // From the edge's first end, or from the apex (see `FaceLayout::near_hit`).
+                    let from = if layout.near_from_apex {
+                        cross(cx.clone() - &r.x, cy.clone() - &r.y)
+                    } else {
+                        cross(r.x.clone(), r.y.clone())
+                    };
+                    let t = clamp(from / cross(cx.clone(), cy.clone()));
                     (
                         layout.wing.near,
                         layout.near_position(&t),
@@ -508,7 +514,13 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     )
                 } else {
                     let (ux, uy) = (layout.apex_far_x.clone(), zero.clone() - &cy);
-                    let u = clamp(cross(r.x.clone() - &cx, r.y.clone() - &cy) / cross(ux, uy));
+                    // From the apex, or from the edge's second end (see `FaceLayout::far_hit`).
+                    let from = if layout.far_from_end {
+                        cross(layout.length.clone() - &r.x, zero.clone() - &r.y)
+                    } else {
+                        cross(r.x.clone() - &cx, r.y.clone() - &cy)
+                    };
+                    let u = clamp(from / cross(ux, uy));
                     (layout.wing.far, layout.far_position(&u), layout.to_far(&s))
                 }
             };

@@ -429,6 +429,14 @@ pub(crate) struct FaceLayout<'a, S> {
     pub near_reversed: bool,
     /// Whether the far edge runs towards the apex.
     pub far_reversed: bool,
+    /// Whether points of the near edge are computed from the apex (its frame's first end) rather
+    /// than from the edge's first end: for number types whose frames start at the nearer end
+    /// ([`Scalar::frames_from_nearer_end`]), so that a point near the apex is not the small
+    /// difference of two lengths of the near edge.
+    pub near_from_apex: bool,
+    /// Likewise, whether points of the far edge are computed from the edge's second end rather
+    /// than from the apex.
+    pub far_from_end: bool,
 }
 
 impl<'a, S: Scalar> FaceLayout<'a, S> {
@@ -442,6 +450,8 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
     ) -> Option<Self> {
         let wing = unfolding.wing(mesh, e, side)?;
         let apex = unfolding.apex(mesh, e, side)?;
+        let near_reversed = unfolding.ends(mesh, wing.near)[0] == wing.apex;
+        let far_reversed = unfolding.ends(mesh, wing.far)[0] != wing.apex;
         Some(FaceLayout {
             length: unfolding.length(e),
             apex_x: &apex.x,
@@ -449,8 +459,10 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
             apex_h: &apex.h,
             near_length: unfolding.length(wing.near),
             far_length: unfolding.length(wing.far),
-            near_reversed: unfolding.ends(mesh, wing.near)[0] == wing.apex,
-            far_reversed: unfolding.ends(mesh, wing.far)[0] != wing.apex,
+            near_reversed,
+            far_reversed,
+            near_from_apex: near_reversed && S::frames_from_nearer_end(),
+            far_from_end: far_reversed && S::frames_from_nearer_end(),
             wing,
         })
     }
@@ -461,26 +473,61 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         self.wing.apex
     }
 
-    /// Where the line through `s` and `(b, 0)` meets the near edge, as a fraction from the
-    /// frame's first end towards the apex (not clamped).
+    /// Where the line through `s` and `(b, 0)` meets the near edge, as a fraction (not
+    /// clamped) from the frame's first end towards the apex, or from the apex backwards if
+    /// the near edge's points are computed from it ([`FaceLayout::near_ends`]).
     #[inline]
     pub(crate) fn near_hit(&self, s: &Planar<S>, b: &S) -> S {
         // Solve cross(d, t C - s) = 0 with d = (b - sx, -sy), C = (cx, -h).
         let dx = b.clone() - &s.x;
-        let num = b.clone() * &s.y;
-        let den = s.y.clone() * self.apex_x - dx * self.apex_h;
+        let den = s.y.clone() * self.apex_x - dx.clone() * self.apex_h;
+        let num = if self.near_from_apex {
+            // 1 - t, without the cancellation.
+            s.y.clone() * &(self.apex_x.clone() - b) - dx * self.apex_h
+        } else {
+            b.clone() * &s.y
+        };
         num / den
     }
 
-    /// Where the line through `s` and `(b, 0)` meets the far edge, as a fraction from the apex
-    /// towards the frame's second end (not clamped).
+    /// Where the line through `s` and `(b, 0)` meets the far edge, as a fraction (not clamped)
+    /// from the apex towards the frame's second end, or from that end backwards if the far
+    /// edge's points are computed from it ([`FaceLayout::far_ends`]).
     #[inline]
     pub(crate) fn far_hit(&self, s: &Planar<S>, b: &S) -> S {
         let dx = b.clone() - &s.x;
-        let num =
-            dx.clone() * &(s.y.clone() + self.apex_h) + s.y.clone() * &(s.x.clone() - self.apex_x);
-        let den = dx * self.apex_h + s.y.clone() * self.apex_far_x;
+        let den = dx.clone() * self.apex_h + s.y.clone() * self.apex_far_x;
+        let num = if self.far_from_end {
+            // 1 - u, without the cancellation.
+            s.y.clone() * &(self.length.clone() - b)
+        } else {
+            dx * &(s.y.clone() + self.apex_h) + s.y.clone() * &(s.x.clone() - self.apex_x)
+        };
         num / den
+    }
+
+    /// The fractions of [`FaceLayout::near_hit`] at the near edge's two ends: the frame's
+    /// first end and the apex.
+    #[inline]
+    pub(crate) fn near_ends(&self) -> [S; 2] {
+        let (zero, one) = (S::zero(), S::from_f64(1.0));
+        if self.near_from_apex {
+            [one, zero]
+        } else {
+            [zero, one]
+        }
+    }
+
+    /// The fractions of [`FaceLayout::far_hit`] at the far edge's two ends: the apex and the
+    /// frame's second end.
+    #[inline]
+    pub(crate) fn far_ends(&self) -> [S; 2] {
+        let (zero, one) = (S::zero(), S::from_f64(1.0));
+        if self.far_from_end {
+            [one, zero]
+        } else {
+            [zero, one]
+        }
     }
 
     /// Where the ray from `s` (above the edge's line) through the point `b` of the edge passes
@@ -520,8 +567,17 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
     #[inline]
     pub(crate) fn to_near(&self, s: &Planar<S>) -> Planar<S> {
         let a = self.near_length;
-        let x = (s.x.clone() * self.apex_x - s.y.clone() * self.apex_h) / a;
         let y = (self.apex_x.clone() * &s.y + self.apex_h.clone() * &s.x) / a;
+        if self.near_from_apex {
+            // Along the near edge from the apex: (s - C) . (-C) / a with C = (cx, -h).
+            let from_apex = (s.y.clone() + self.apex_h) * self.apex_h
+                - (s.x.clone() - self.apex_x) * self.apex_x;
+            return Planar {
+                x: from_apex / a,
+                y,
+            };
+        }
+        let x = (s.x.clone() * self.apex_x - s.y.clone() * self.apex_h) / a;
         if self.near_reversed {
             Planar {
                 x: a.clone() - x,
@@ -539,8 +595,14 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         let ux = self.apex_far_x.clone();
         let sx = s.x.clone() - self.apex_x;
         let sy = s.y.clone() + self.apex_h;
-        let x = (sx.clone() * &ux + sy.clone() * self.apex_h) / b;
-        let y = (ux * &sy - self.apex_h.clone() * &sx) / b;
+        let y = (ux.clone() * &sy - self.apex_h.clone() * &sx) / b;
+        if self.far_from_end {
+            // Along the far edge from the frame's second end E = (length, 0): (s - E) . (C - E)
+            // / b, with C - E = (-far_x, -h).
+            let from_end = (self.length.clone() - &s.x) * &ux - s.y.clone() * self.apex_h;
+            return Planar { x: from_end / b, y };
+        }
+        let x = (sx * &ux + sy * self.apex_h) / b;
         if self.far_reversed {
             Planar {
                 x: b.clone() - x,
@@ -551,24 +613,24 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         }
     }
 
-    /// A fraction `t` along the near edge (from the frame's first end to the apex) as a
+    /// A fraction `t` along the near edge (as [`FaceLayout::near_hit`] measures it) as a
     /// position in the near edge's frame.
     #[inline]
     pub(crate) fn near_position(&self, t: &S) -> S {
         let x = t.clone() * self.near_length;
-        if self.near_reversed {
+        if self.near_reversed && !self.near_from_apex {
             self.near_length.clone() - x
         } else {
             x
         }
     }
 
-    /// A fraction `u` along the far edge (from the apex to the frame's second end) as a
+    /// A fraction `u` along the far edge (as [`FaceLayout::far_hit`] measures it) as a
     /// position in the far edge's frame.
     #[inline]
     pub(crate) fn far_position(&self, u: &S) -> S {
         let x = u.clone() * self.far_length;
-        if self.far_reversed {
+        if self.far_reversed && !self.far_from_end {
             self.far_length.clone() - x
         } else {
             x
