@@ -111,7 +111,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// invalid target, [`TraceError::Lost`] if rounding sends the walk astray.
     pub fn trace_back(&self, target: &SurfacePoint) -> Result<GeodesicPath, TraceError> {
         let (trail, distance, source) = self.trace(target)?;
-        Ok(self.path_of(trail.points, &distance, source))
+        Ok(self.path_of(&trail, &distance, source))
     }
 
     /// [`GeodesicField::trace_back`] with the backend's own numbers: where the path crosses an
@@ -134,7 +134,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             })
             .collect();
         Ok(ExactPath {
-            path: self.path_of(trail.points, &distance, source),
+            path: self.path_of(&trail, &distance, source),
             offsets,
             distance: self.to_model(&distance),
         })
@@ -237,15 +237,23 @@ impl<S: Scalar> GeodesicField<'_, S> {
         })
     }
 
-    fn path_of(
-        &self,
-        simplices: Vec<SurfacePoint>,
-        distance: &S,
-        source: SourceId,
-    ) -> GeodesicPath {
+    fn path_of(&self, trail: &Trail<S>, distance: &S, source: SourceId) -> GeodesicPath {
+        // A point the walk found inside an edge is placed from its offset in the edge's frame,
+        // not from its fraction `t`, which on a long edge is known only to ulps of the length.
+        let points = trail
+            .points
+            .iter()
+            .zip(&trail.offsets)
+            .map(|(p, x)| match (p, x) {
+                (SurfacePoint::Edge { edge, .. }, Some(x)) => {
+                    self.unfolding.edge_position(self.mesh(), *edge, x)
+                }
+                _ => p.position(self.mesh()),
+            })
+            .collect();
         GeodesicPath {
-            points: simplices.iter().map(|p| p.position(self.mesh())).collect(),
-            simplices,
+            points,
+            simplices: trail.points.clone(),
             distance: self.unfolding.to_model(distance.to_f64()),
             source,
         }

@@ -13,6 +13,7 @@ use super::source::SurfacePoint;
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{normalizing_power, EdgeId, FaceId, Side, TriMesh, VertexId, Wing};
 use crate::scalar::{Scalar, Sign};
+use glam::DVec3;
 use std::cmp::Ordering;
 
 /// Per-run geometry in the backend's number type: edge lengths and, for each side of each edge,
@@ -289,6 +290,14 @@ impl<S: Scalar> Unfolding<S> {
             false => x.clone(),
             true => self.length(e).clone() - x,
         }
+    }
+
+    /// The point at position `x` in the frame of `e`, in space (the model's coordinates),
+    /// placed from the frame's first end: to ulps of `x`, not of the edge's length.
+    pub(crate) fn edge_position(&self, mesh: &TriMesh, e: EdgeId, x: &S) -> DVec3 {
+        let [a, b] = self.ends(mesh, e).map(|v| mesh.position(v));
+        let t = (x.clone() / self.length(e)).to_f64().clamp(0.0, 1.0);
+        a + t * (b - a)
     }
 
     /// The point at position `x` in the frame of `e`, named by its fraction from `vertices[0]`.
@@ -593,16 +602,19 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
     pub(crate) fn to_far(&self, s: &Planar<S>) -> Planar<S> {
         let b = self.far_length;
         let ux = self.apex_far_x.clone();
+        if self.far_from_end {
+            // From the frame's second end E = (length, 0) rather than from the apex C, with
+            // C - E = (-far_x, -h): along the edge (s - E) . (C - E) / b, across it
+            // (E - C) x (s - E) / b.
+            let back = self.length.clone() - &s.x;
+            let x = back.clone() * &ux - s.y.clone() * self.apex_h;
+            let y = ux * &s.y + back * self.apex_h;
+            return Planar { x: x / b, y: y / b };
+        }
         let sx = s.x.clone() - self.apex_x;
         let sy = s.y.clone() + self.apex_h;
-        let y = (ux.clone() * &sy - self.apex_h.clone() * &sx) / b;
-        if self.far_from_end {
-            // Along the far edge from the frame's second end E = (length, 0): (s - E) . (C - E)
-            // / b, with C - E = (-far_x, -h).
-            let from_end = (self.length.clone() - &s.x) * &ux - s.y.clone() * self.apex_h;
-            return Planar { x: from_end / b, y };
-        }
-        let x = (sx * &ux + sy * self.apex_h) / b;
+        let x = (sx.clone() * &ux + sy.clone() * self.apex_h) / b;
+        let y = (ux * &sy - self.apex_h.clone() * &sx) / b;
         if self.far_reversed {
             Planar {
                 x: b.clone() - x,
