@@ -438,7 +438,8 @@ impl<S: Scalar> GeodesicField<'_, S> {
         }
         let depth = s.y.clone() + &at.y;
         let x = s.x.clone() + (at.x.clone() - &s.x) * &s.y / depth;
-        if let Some(v) = self.end_vertex(edge, &x) {
+        let reach = (s.x.clone() - &x).to_f64().hypot(s.y.to_f64());
+        if let Some(v) = self.end_vertex(edge, &x, reach) {
             return Ok(Step::Vertex(v));
         }
         simplices.push_edge(self.unfolding.edge_point(edge, &x), &x);
@@ -452,11 +453,16 @@ impl<S: Scalar> GeodesicField<'_, S> {
         }))
     }
 
-    /// The end of `edge` at position `x`, if the backend cannot tell `x` from it.
-    fn end_vertex(&self, edge: EdgeId, x: &S) -> Option<VertexId> {
+    /// The end of `edge` at position `x`, if the backend cannot tell `x` from it. `reach`,
+    /// the point's distance from the pseudo-source, is the scale of the constructions that
+    /// placed it: near the frame's first end, where positions are known to ulps of their own
+    /// size, the point is told from the vertex at that scale, not at the edge's length (on an
+    /// edge 1e8 long, a path 1e-4 from a vertex would otherwise pass through it).
+    fn end_vertex(&self, edge: EdgeId, x: &S, reach: f64) -> Option<VertexId> {
         let length = self.unfolding.length(edge);
         let [v0, v1] = self.unfolding.ends(self.mesh(), edge);
-        if !S::has_extent(&S::zero(), x, length) {
+        let near_first = S::from_f64(reach.min(length.to_f64()));
+        if !S::has_extent(&S::zero(), x, &near_first) {
             Some(v0)
         } else if !S::has_extent(x, length, length) {
             Some(v1)
@@ -545,7 +551,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 _ => S::orientation([&r.x, &r.y], [&s.x, &s.y], [&cx, &cy]) == Sign::Positive,
             };
             let chosen = exit(near);
-            let end = self.end_vertex(chosen.0, &chosen.1);
+            let end = self.end_vertex(chosen.0, &chosen.1, dx.to_f64().hypot(dy.to_f64()));
             let (next_edge, position, along) = chosen;
             if let Some(v) = end {
                 return Ok(WalkEnd::Vertex(v));
