@@ -55,25 +55,6 @@ pub enum ViolationKind {
     Panic,
 }
 
-impl ViolationKind {
-    /// Whether the invariant measures the accuracy of distances and paths against each other
-    /// (symmetry, agreement, traces), rather than what every backend owes on any input (no
-    /// panic or error, zero at the source, the straight-line and edge-path bounds, infinity
-    /// exactly where no edge path reaches).
-    pub fn measures_accuracy(self) -> bool {
-        !matches!(
-            self,
-            ViolationKind::SourceNotZero
-                | ViolationKind::BelowStraightLine
-                | ViolationKind::AboveEdgePath
-                | ViolationKind::ReachableInfinite
-                | ViolationKind::UnreachableFinite
-                | ViolationKind::Error
-                | ViolationKind::Panic
-        )
-    }
-}
-
 /// One broken invariant in one check.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Violation {
