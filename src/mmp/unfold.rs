@@ -2,8 +2,9 @@
 //!
 //! Each edge has a frame: x runs along the edge from its first end, y is the distance from the
 //! edge's line. The first end is the edge's `vertices[0]`, or, for number types that round
-//! ([`Scalar::frames_from_nearer_end`]), whichever end lies nearer the sources: positions are
-//! then known to ulps of their offset from the end the short geodesics pass. A face on one side of an edge is laid out with its apex at `(apex_x, -apex_h)`:
+//! ([`Scalar::frames_from_nearer_end`]) and an edge more than `WIDE_SPAN` times longer than its
+//! nearer end's distance from the sources, that end: positions are then known to ulps of their
+//! offset from the end the short geodesics pass, not to ulps of the edge's length. A face on one side of an edge is laid out with its apex at `(apex_x, -apex_h)`:
 //! below the line, as seen by a wedge whose pseudo-source is above it. The maps here carry a
 //! point from an edge's frame into the frames of the face's two other edges.
 
@@ -11,7 +12,9 @@ use super::flat_region::FlatRegions;
 use super::planar::Planar;
 use super::source::SurfacePoint;
 use super::wedge::{PseudoSource, Wedge};
-use crate::mesh::{normalizing_power, EdgeId, FaceId, Side, TriMesh, VertexId, Wing};
+use crate::mesh::{
+    normalizing_power, EdgeId, FaceId, Side, TriMesh, ValidationReport, VertexId, Wing,
+};
 use crate::scalar::{Scalar, Sign};
 use glam::DVec3;
 use std::cmp::Ordering;
@@ -35,6 +38,9 @@ pub(crate) struct Unfolding<S> {
     apex: Vec<Option<Apex<S>>>,
     /// Whether the edge's frame starts at its `vertices[1]` (see the module docs).
     reversed: Vec<bool>,
+    /// Whether the edge is long beside its nearer end's distance from the sources (its frame
+    /// starting at that end): points on it are then computed from that end ([`FaceLayout`]).
+    anchored: Vec<bool>,
     /// The flat regions, for number types that keep values (see `flat_region.rs`).
     flat: Option<FlatRegions<S>>,
     /// The mesh's unit scale.
@@ -174,9 +180,11 @@ pub(crate) fn vertex_point<S: Scalar>(mesh: &TriMesh, v: VertexId) -> [S; 3] {
     mesh.position(v).to_array().map(|c| S::from_f64(c) * &scale)
 }
 
-/// For each edge, whether its `vertices[1]` lies nearer the sources (in space) than its
-/// `vertices[0]`.
-fn nearer_to_second_end(mesh: &TriMesh, sources: &[SurfacePoint]) -> Vec<bool> {
+/// For each edge, whether it is longer than [`ValidationReport::WIDE_SPAN`] times its nearer
+/// end's distance from the sources (in space): ulps of its length would then exceed 1e-12 of
+/// the distances near that end, so its frame starts there. Returns, per edge, whether that
+/// end is its `vertices[1]` (the frame is reversed) and whether the edge is that long.
+fn frames_near_sources(mesh: &TriMesh, sources: &[SurfacePoint]) -> (Vec<bool>, Vec<bool>) {
     // In scaled coordinates, where squared distances neither overflow nor underflow.
     let scale = mesh.unit_scale();
     let from: Vec<_> = sources.iter().map(|p| p.position(mesh) * scale).collect();
@@ -189,20 +197,26 @@ fn nearer_to_second_end(mesh: &TriMesh, sources: &[SurfacePoint]) -> Vec<bool> {
     let near: Vec<f64> = (0..mesh.vertex_count())
         .map(|v| nearest(VertexId(v as u32)))
         .collect();
+    let span = ValidationReport::WIDE_SPAN;
     mesh.edges()
         .iter()
-        .map(|e| near[e.vertices[1].index()] < near[e.vertices[0].index()])
-        .collect()
+        .map(|e| {
+            let [d0, d1] = e.vertices.map(|v| near[v.index()]);
+            let length = (mesh.position(e.vertices[1]) - mesh.position(e.vertices[0])) * scale;
+            let long = length.length_squared() > span * span * d0.min(d1);
+            (long && d1 < d0, long)
+        })
+        .unzip()
 }
 
 impl<S: Scalar> Unfolding<S> {
     /// The unfolding of `mesh` for a propagation from `sources`.
     pub(crate) fn new(mesh: &TriMesh, sources: &[SurfacePoint]) -> Self {
         let edge_count = mesh.edge_count();
-        let reversed = if S::frames_from_nearer_end() {
-            nearer_to_second_end(mesh, sources)
+        let (reversed, anchored) = if S::frames_from_nearer_end() {
+            frames_near_sources(mesh, sources)
         } else {
-            vec![false; edge_count]
+            (vec![false; edge_count], vec![false; edge_count])
         };
         let mut edge_length = Vec::with_capacity(edge_count);
         let mut zero_length = Vec::with_capacity(edge_count);
@@ -252,6 +266,7 @@ impl<S: Scalar> Unfolding<S> {
             has_twin,
             apex,
             reversed,
+            anchored,
             flat,
             scale: mesh.unit_scale(),
         }
@@ -439,9 +454,9 @@ pub(crate) struct FaceLayout<'a, S> {
     /// Whether the far edge runs towards the apex.
     pub far_reversed: bool,
     /// Whether points of the near edge are computed from the apex (its frame's first end) rather
-    /// than from the edge's first end: for number types whose frames start at the nearer end
-    /// ([`Scalar::frames_from_nearer_end`]), so that a point near the apex is not the small
-    /// difference of two lengths of the near edge.
+    /// than from the edge's first end: where the near edge is long beside the apex's distance
+    /// from the sources (see `Unfolding::anchored`), so that a point near the apex is not the
+    /// small difference of two lengths of the near edge.
     pub near_from_apex: bool,
     /// Likewise, whether points of the far edge are computed from the edge's second end rather
     /// than from the apex.
@@ -470,8 +485,8 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
             far_length: unfolding.length(wing.far),
             near_reversed,
             far_reversed,
-            near_from_apex: near_reversed && S::frames_from_nearer_end(),
-            far_from_end: far_reversed && S::frames_from_nearer_end(),
+            near_from_apex: near_reversed && unfolding.anchored[wing.near.index()],
+            far_from_end: far_reversed && unfolding.anchored[wing.far.index()],
             wing,
         })
     }
