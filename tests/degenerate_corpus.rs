@@ -116,9 +116,8 @@ tiny_regressions! {
 }
 
 /// Cases whose float results were wrong beyond any tolerance (rays through an edge 1e-12 the
-/// size of its neighbours): their meshes are beyond the float backends' range, which the mesh
-/// report warns of, and the float backends keep what they owe on any input, the straight-line
-/// and edge-path bounds included.
+/// size of its neighbours): their edge lengths span more than `ValidationReport::WIDE_SPAN`,
+/// which the mesh report warns of, and they keep every invariant.
 macro_rules! beyond_float_range {
     ($($name:ident: $kind:ident, $seed:literal;)*) => {$(
         #[test]

@@ -76,6 +76,9 @@ impl Scalar for CloneOnly {
     fn at_least(value: Self, bound: impl FnOnce() -> Self) -> Self {
         CloneOnly(f64::at_least(value.0, || bound().0))
     }
+    fn frames_from_nearer_end() -> bool {
+        f64::frames_from_nearer_end()
+    }
     fn sign(&self) -> Sign {
         self.0.sign()
     }

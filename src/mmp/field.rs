@@ -145,11 +145,26 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     /// If `e` is not an edge of the mesh.
     pub fn wedges(&self, e: EdgeId) -> Vec<Wedge<S>> {
         let wedges = self.wedges.on(e);
-        if self.mesh.unit_scale() == 1.0 {
-            return wedges.to_vec();
+        let mut wedges: Vec<Wedge<S>> = if !self.unfolding.is_reversed(e) {
+            wedges.to_vec()
+        } else {
+            let from_first = |x: &S| self.unfolding.offset_from_first_vertex(e, x);
+            wedges
+                .iter()
+                .rev()
+                .map(|w| Wedge {
+                    b0: from_first(&w.b1),
+                    b1: from_first(&w.b0),
+                    source_x: from_first(&w.source_x),
+                    ..w.clone()
+                })
+                .collect()
+        };
+        if self.mesh.unit_scale() != 1.0 {
+            let factor = self.model_factor();
+            wedges = wedges.iter().map(|w| w.scaled(&factor)).collect();
         }
-        let factor = self.model_factor();
-        wedges.iter().map(|w| w.scaled(&factor)).collect()
+        wedges
     }
 
     /// The number of final wedges on every edge.

@@ -256,7 +256,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         sources: Vec<SurfacePoint>,
         stop_points: &[SurfacePoint],
     ) -> Self {
-        let unfolding = Unfolding::new(mesh);
+        let unfolding = Unfolding::new(mesh, &sources);
         let stop = StopPoints::new(mesh, &unfolding, stop_points);
         let max_distance = options
             .max_distance
@@ -341,7 +341,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// Inserts a wedge on its edge, intersecting it with the wedges there.
     fn insert(&mut self, w: Wedge<S>, kept: Provenance<S>) {
         let e = w.edge;
-        let edge = (self.unfolding.length(e), self.mesh.edge(e).vertices);
+        let edge = (self.unfolding.length(e), self.unfolding.ends(self.mesh, e));
         let mut reach = Reach {
             mesh: self.mesh,
             unfolding: &self.unfolding,
@@ -374,9 +374,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 self.emit_source_vertex(self.mesh.edge(edge).vertices[0], k)
             }
             SurfacePoint::Edge { edge, t } => {
-                let length = self.unfolding.length(edge).clone();
                 let on_edge = Planar {
-                    x: S::from_f64(t) * &length,
+                    x: self.unfolding.at_fraction(edge, t),
                     y: S::zero(),
                 };
                 self.add_wedge(
@@ -486,7 +485,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             if mesh.is_degenerate_face(f) && self.unfolding.is_inside(g, &at) {
                 beyond.extend(mesh.edge_faces(g).filter(|&h| h != f));
             }
-            let ends = mesh.edge(g).vertices.map(to);
+            let ends = self.unfolding.ends(mesh, g).map(to);
             // In a flat region, the vertex itself in the region's frame (see `flat_region.rs`).
             let image = self
                 .unfolding
@@ -498,13 +497,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
             self.add_wedge(g, at, side, sigma.clone(), (source, k), (Some(ends), image));
         }
         for &g in mesh.vertex_edges(v) {
-            let x = if mesh.edge(g).vertices[0] == v {
+            let x = if self.unfolding.ends(mesh, g)[0] == v {
                 S::zero()
             } else {
                 self.unfolding.length(g).clone()
             };
             let at = Planar { x, y: S::zero() };
-            let ends = mesh.edge(g).vertices.map(to);
+            let ends = self.unfolding.ends(mesh, g).map(to);
             self.add_wedge(
                 g,
                 at,
@@ -664,7 +663,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             }
             let distance = S::kept(&kept.at_ends[i])?;
             let point = self.unfolding.apex_point(mesh, g, mesh.side_of(g, face)?)?;
-            let vertex = mesh.edge(w.edge).vertices[i];
+            let vertex = self.unfolding.ends(mesh, w.edge)[i];
             let image = flat.map(|(regions, region)| RegionImage {
                 region,
                 point: regions.corner(region, vertex).clone(),
@@ -696,8 +695,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
         // An edge of length zero (coincident corners) carries no wedge; its face passes rays
         // on to its other edge unchanged.
         if side0 == Ordering::Less && !self.unfolding.is_zero_length(near) {
+            let [at_first, at_apex_t] = layout.near_ends();
             let (t0, a0) = if at_v0 {
-                (zero.clone(), None)
+                (at_first, None)
             } else {
                 let a0 = anchor_on(near, 0, &to_near);
                 (clamp(layout.near_hit(from(0), &w.b0)), a0)
@@ -706,7 +706,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 let a1 = anchor_on(near, 1, &to_near);
                 (clamp(layout.near_hit(from(1), &w.b1)), a1)
             } else {
-                (one.clone(), None)
+                (at_apex_t, None)
             };
             let positions = [layout.near_position(&t0), layout.near_position(&t1)];
             let ends = if layout.near_reversed {
@@ -719,14 +719,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
             children[0] = Some((near, positions, at, kept));
         }
         if side1 == Ordering::Greater && !self.unfolding.is_zero_length(far) {
+            let [at_apex_u, at_second] = layout.far_ends();
             let (u0, a0) = if side0 == Ordering::Greater {
                 let a0 = anchor_on(far, 0, &to_far);
                 (clamp(layout.far_hit(from(0), &w.b0)), a0)
             } else {
-                (zero.clone(), None)
+                (at_apex_u, None)
             };
             let (u1, a1) = if at_v1 {
-                (one.clone(), None)
+                (at_second, None)
             } else {
                 let a1 = anchor_on(far, 1, &to_far);
                 (clamp(layout.far_hit(from(1), &w.b1)), a1)
@@ -778,7 +779,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         if w.min_distance().to_f64() > self.max_distance {
             return true;
         }
-        let [v0, v1] = self.mesh.edge(w.edge).vertices;
+        let [v0, v1] = self.unfolding.ends(self.mesh, w.edge);
         let d = w.distance_function();
         if let Some(known) = self.front.vertex(v0) {
             let via = known.distance.clone() + &w.b1;

@@ -95,7 +95,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                         if own == edge && !self.unfolding.is_zero_length(edge) =>
                     {
                         Some(Planar {
-                            x: S::from_f64(t) * self.unfolding.length(edge),
+                            x: self.unfolding.at_fraction(edge, t),
                             y: S::zero(),
                         })
                     }

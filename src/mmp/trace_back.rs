@@ -111,7 +111,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// invalid target, [`TraceError::Lost`] if rounding sends the walk astray.
     pub fn trace_back(&self, target: &SurfacePoint) -> Result<GeodesicPath, TraceError> {
         let (trail, distance, source) = self.trace(target)?;
-        Ok(self.path_of(trail.points, &distance, source))
+        Ok(self.path_of(&trail, &distance, source))
     }
 
     /// [`GeodesicField::trace_back`] with the backend's own numbers: where the path crosses an
@@ -123,12 +123,18 @@ impl<S: Scalar> GeodesicField<'_, S> {
     pub fn trace_back_exact(&self, target: &SurfacePoint) -> Result<ExactPath<S>, TraceError> {
         let (trail, distance, source) = self.trace(target)?;
         let offsets = trail
-            .offsets
+            .points
             .iter()
-            .map(|x| x.as_ref().map(|x| self.to_model(x)))
+            .zip(&trail.offsets)
+            .map(|(p, x)| match (p, x) {
+                (SurfacePoint::Edge { edge, .. }, Some(x)) => {
+                    Some(self.to_model(&self.unfolding.offset_from_first_vertex(*edge, x)))
+                }
+                _ => None,
+            })
             .collect();
         Ok(ExactPath {
-            path: self.path_of(trail.points, &distance, source),
+            path: self.path_of(&trail, &distance, source),
             offsets,
             distance: self.to_model(&distance),
         })
@@ -231,15 +237,23 @@ impl<S: Scalar> GeodesicField<'_, S> {
         })
     }
 
-    fn path_of(
-        &self,
-        simplices: Vec<SurfacePoint>,
-        distance: &S,
-        source: SourceId,
-    ) -> GeodesicPath {
+    fn path_of(&self, trail: &Trail<S>, distance: &S, source: SourceId) -> GeodesicPath {
+        // A point the walk found inside an edge is placed from its offset in the edge's frame,
+        // not from its fraction `t`, which on a long edge is known only to ulps of the length.
+        let points = trail
+            .points
+            .iter()
+            .zip(&trail.offsets)
+            .map(|(p, x)| match (p, x) {
+                (SurfacePoint::Edge { edge, .. }, Some(x)) => {
+                    self.unfolding.edge_position(self.mesh(), *edge, x)
+                }
+                _ => p.position(self.mesh()),
+            })
+            .collect();
         GeodesicPath {
-            points: simplices.iter().map(|p| p.position(self.mesh())).collect(),
-            simplices,
+            points,
+            simplices: trail.points.clone(),
             distance: self.unfolding.to_model(distance.to_f64()),
             source,
         }
@@ -318,8 +332,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             consider(self.best_through_edge(edge, face, &at, beyond));
         }
         for &edge in self.mesh().vertex_edges(v) {
-            let e = self.mesh().edge(edge);
-            let x = if e.vertices[0] == v {
+            let x = if self.unfolding.ends(self.mesh(), edge)[0] == v {
                 S::zero()
             } else {
                 self.unfolding.length(edge).clone()
@@ -404,7 +417,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 _ => false,
             };
             if !named_on_edge {
-                simplices.push_edge(edge, &at.x, self.unfolding.length(edge));
+                simplices.push_edge(self.unfolding.edge_point(edge, &at.x), &at.x);
             }
             return Ok(Step::Walk(Walk {
                 edge,
@@ -425,11 +438,11 @@ impl<S: Scalar> GeodesicField<'_, S> {
         }
         let depth = s.y.clone() + &at.y;
         let x = s.x.clone() + (at.x.clone() - &s.x) * &s.y / depth;
-        if let Some(v) = self.end_vertex(edge, &x) {
+        let reach = (s.x.clone() - &x).to_f64().hypot(s.y.to_f64());
+        if let Some(v) = self.end_vertex(edge, &x, reach) {
             return Ok(Step::Vertex(v));
         }
-        let length = self.unfolding.length(edge);
-        simplices.push_edge(edge, &x, length);
+        simplices.push_edge(self.unfolding.edge_point(edge, &x), &x);
         let beyond = wedge_face()?;
         Ok(Step::Walk(Walk {
             edge,
@@ -440,11 +453,16 @@ impl<S: Scalar> GeodesicField<'_, S> {
         }))
     }
 
-    /// The end of `edge` at position `x`, if the backend cannot tell `x` from it.
-    fn end_vertex(&self, edge: EdgeId, x: &S) -> Option<VertexId> {
+    /// The end of `edge` at position `x`, if the backend cannot tell `x` from it. `reach`,
+    /// the point's distance from the pseudo-source, is the scale of the constructions that
+    /// placed it: near the frame's first end, where positions are known to ulps of their own
+    /// size, the point is told from the vertex at that scale, not at the edge's length (on an
+    /// edge 1e8 long, a path 1e-4 from a vertex would otherwise pass through it).
+    fn end_vertex(&self, edge: EdgeId, x: &S, reach: f64) -> Option<VertexId> {
         let length = self.unfolding.length(edge);
-        let [v0, v1] = self.mesh().edge(edge).vertices;
-        if !S::has_extent(&S::zero(), x, length) {
+        let [v0, v1] = self.unfolding.ends(self.mesh(), edge);
+        let near_first = S::from_f64(reach.min(length.to_f64()));
+        if !S::has_extent(&S::zero(), x, &near_first) {
             Some(v0)
         } else if !S::has_extent(x, length, length) {
             Some(v1)
@@ -496,7 +514,13 @@ impl<S: Scalar> GeodesicField<'_, S> {
             // vertices[0] to the apex) or by the far edge (from the apex to vertices[1]).
             let exit = |near: bool| {
                 if near {
-                    let t = clamp(cross(r.x.clone(), r.y.clone()) / cross(cx.clone(), cy.clone()));
+                    // From the edge's first end, or from the apex (see `FaceLayout::near_hit`).
+                    let from = if layout.near_from_apex {
+                        cross(cx.clone() - &r.x, cy.clone() - &r.y)
+                    } else {
+                        cross(r.x.clone(), r.y.clone())
+                    };
+                    let t = clamp(from / cross(cx.clone(), cy.clone()));
                     (
                         layout.wing.near,
                         layout.near_position(&t),
@@ -504,14 +528,20 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     )
                 } else {
                     let (ux, uy) = (layout.apex_far_x.clone(), zero.clone() - &cy);
-                    let u = clamp(cross(r.x.clone() - &cx, r.y.clone() - &cy) / cross(ux, uy));
+                    // From the apex, or from the edge's second end (see `FaceLayout::far_hit`).
+                    let from = if layout.far_from_end {
+                        cross(layout.length.clone() - &r.x, zero.clone() - &r.y)
+                    } else {
+                        cross(r.x.clone() - &cx, r.y.clone() - &cy)
+                    };
+                    let u = clamp(from / cross(ux, uy));
                     (layout.wing.far, layout.far_position(&u), layout.to_far(&s))
                 }
             };
             // From a corner of the face the line leaves by the opposite side; from elsewhere,
             // by the side the apex is on.
             // A start at a vertex at the same place as a corner starts from that corner.
-            let [p0, p1] = self.mesh().edge(walk.edge).vertices;
+            let [p0, p1] = self.unfolding.ends(self.mesh(), walk.edge);
             let start = walk.start.map(|v| self.twins(v));
             let starts_at =
                 |p: VertexId| start.as_ref().is_some_and(|g| g.iter().any(|t| t.0 == p));
@@ -521,12 +551,12 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 _ => S::orientation([&r.x, &r.y], [&s.x, &s.y], [&cx, &cy]) == Sign::Positive,
             };
             let chosen = exit(near);
-            let end = self.end_vertex(chosen.0, &chosen.1);
+            let end = self.end_vertex(chosen.0, &chosen.1, dx.to_f64().hypot(dy.to_f64()));
             let (next_edge, position, along) = chosen;
             if let Some(v) = end {
                 return Ok(WalkEnd::Vertex(v));
             }
-            simplices.push_edge(next_edge, &position, self.unfolding.length(next_edge));
+            simplices.push_edge(self.unfolding.edge_point(next_edge, &position), &position);
             if self.mesh().side_count(next_edge) > 2 {
                 return Ok(WalkEnd::Edge {
                     edge: next_edge,
@@ -612,10 +642,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 if !self.unfolding.is_inside(g, &on) {
                     continue;
                 }
-                let here = (
-                    edge_point(g, &on.x, self.unfolding.length(g)),
-                    Some(on.x.clone()),
-                );
+                let here = (self.unfolding.edge_point(g, &on.x), Some(on.x.clone()));
                 for beyond in self.mesh().edge_faces(g) {
                     if reached.iter().all(|(r, _)| *r != beyond) {
                         reached.push((beyond, Some((next, here.clone()))));
@@ -626,11 +653,6 @@ impl<S: Scalar> GeodesicField<'_, S> {
         }
         None
     }
-}
-
-fn edge_point<S: Scalar>(edge: EdgeId, x: &S, length: &S) -> SurfacePoint {
-    let t = (x.clone() / length).to_f64().clamp(0.0, 1.0);
-    SurfacePoint::Edge { edge, t }
 }
 
 /// A point of a trail and, on an edge, its offset along the edge in the number type.
@@ -659,9 +681,9 @@ impl<S: Scalar> Trail<S> {
         self.push_at(p, None);
     }
 
-    /// Appends the point at `x` along `edge` (of length `length`).
-    fn push_edge(&mut self, edge: EdgeId, x: &S, length: &S) {
-        self.push_at(edge_point(edge, x, length), Some(x.clone()));
+    /// Appends the point `p` of an edge, at position `x` in the edge's frame.
+    fn push_edge(&mut self, p: SurfacePoint, x: &S) {
+        self.push_at(p, Some(x.clone()));
     }
 
     fn push_at(&mut self, p: SurfacePoint, offset: Option<S>) {

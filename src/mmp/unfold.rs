@@ -1,7 +1,10 @@
 //! Unfolding: the planar frames of edges and the maps between them [SSK+05 §3].
 //!
-//! Each edge has a frame: x runs along the edge from `vertices[0]`, y is the distance from the
-//! edge's line. A face on one side of an edge is laid out with its apex at `(apex_x, -apex_h)`:
+//! Each edge has a frame: x runs along the edge from its first end, y is the distance from the
+//! edge's line. The first end is the edge's `vertices[0]`, or, for number types that round
+//! ([`Scalar::frames_from_nearer_end`]) and an edge more than `WIDE_SPAN` times longer than its
+//! nearer end's distance from the sources, that end: positions are then known to ulps of their
+//! offset from the end the short geodesics pass, not to ulps of the edge's length. A face on one side of an edge is laid out with its apex at `(apex_x, -apex_h)`:
 //! below the line, as seen by a wedge whose pseudo-source is above it. The maps here carry a
 //! point from an edge's frame into the frames of the face's two other edges.
 
@@ -9,8 +12,11 @@ use super::flat_region::FlatRegions;
 use super::planar::Planar;
 use super::source::SurfacePoint;
 use super::wedge::{PseudoSource, Wedge};
-use crate::mesh::{normalizing_power, EdgeId, FaceId, Side, TriMesh, VertexId, Wing};
+use crate::mesh::{
+    normalizing_power, EdgeId, FaceId, Side, TriMesh, ValidationReport, VertexId, Wing,
+};
 use crate::scalar::{Scalar, Sign};
+use glam::DVec3;
 use std::cmp::Ordering;
 
 /// Per-run geometry in the backend's number type: edge lengths and, for each side of each edge,
@@ -30,6 +36,11 @@ pub(crate) struct Unfolding<S> {
     has_twin: Vec<bool>,
     /// The apex of the face on each side of each edge, at the side's [`TriMesh::side_slot`].
     apex: Vec<Option<Apex<S>>>,
+    /// Whether the edge's frame starts at its `vertices[1]` (see the module docs).
+    reversed: Vec<bool>,
+    /// Whether the edge is long beside its nearer end's distance from the sources (its frame
+    /// starting at that end): points on it are then computed from that end ([`FaceLayout`]).
+    anchored: Vec<bool>,
     /// The flat regions, for number types that keep values (see `flat_region.rs`).
     flat: Option<FlatRegions<S>>,
     /// The mesh's unit scale.
@@ -107,9 +118,9 @@ impl<S: Scalar> EdgeFrame<S> {
 /// length.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Apex<S> {
-    /// Position along the edge, from its `vertices[0]`.
+    /// Position along the edge, from the frame's first end.
     pub x: S,
-    /// Position along the edge, from its `vertices[1]` backwards (`length - x`).
+    /// Position along the edge, from the frame's second end backwards (`length - x`).
     pub far_x: S,
     /// Distance from the edge's line, `h >= 0`.
     pub h: S,
@@ -137,15 +148,76 @@ impl<S: Scalar> Apex<S> {
     }
 }
 
+/// The ends of `e` in the order of its frame.
+#[inline]
+fn frame_ends(mesh: &TriMesh, reversed: &[bool], e: EdgeId) -> [VertexId; 2] {
+    let [v0, v1] = mesh.edge(e).vertices;
+    if reversed[e.index()] {
+        [v1, v0]
+    } else {
+        [v0, v1]
+    }
+}
+
+/// The wing on `side` of `e` in the order of its frame.
+#[inline]
+fn frame_wing(mesh: &TriMesh, reversed: &[bool], e: EdgeId, side: Side) -> Option<Wing> {
+    let wing = mesh.wing(e, side)?;
+    Some(if reversed[e.index()] {
+        Wing {
+            near: wing.far,
+            far: wing.near,
+            ..wing.clone()
+        }
+    } else {
+        wing.clone()
+    })
+}
+
 /// A vertex's position in scaled coordinates, in the backend's number type.
 pub(crate) fn vertex_point<S: Scalar>(mesh: &TriMesh, v: VertexId) -> [S; 3] {
     let scale = S::from_f64(mesh.unit_scale());
     mesh.position(v).to_array().map(|c| S::from_f64(c) * &scale)
 }
 
+/// For each edge, whether it is longer than [`ValidationReport::WIDE_SPAN`] times its nearer
+/// end's distance from the sources (in space): ulps of its length would then exceed 1e-12 of
+/// the distances near that end, so its frame starts there. Returns, per edge, whether that
+/// end is its `vertices[1]` (the frame is reversed) and whether the edge is that long.
+fn frames_near_sources(mesh: &TriMesh, sources: &[SurfacePoint]) -> (Vec<bool>, Vec<bool>) {
+    // In scaled coordinates, where squared distances neither overflow nor underflow.
+    let scale = mesh.unit_scale();
+    let from: Vec<_> = sources.iter().map(|p| p.position(mesh) * scale).collect();
+    let nearest = |v: VertexId| {
+        let q = mesh.position(v) * scale;
+        from.iter()
+            .map(|p| p.distance_squared(q))
+            .fold(f64::INFINITY, f64::min)
+    };
+    let near: Vec<f64> = (0..mesh.vertex_count())
+        .map(|v| nearest(VertexId(v as u32)))
+        .collect();
+    let span = ValidationReport::WIDE_SPAN;
+    mesh.edges()
+        .iter()
+        .map(|e| {
+            let [d0, d1] = e.vertices.map(|v| near[v.index()]);
+            let length = (mesh.position(e.vertices[1]) - mesh.position(e.vertices[0])) * scale;
+            let long = length.length_squared() > span * span * d0.min(d1);
+            (long && d1 < d0, long)
+        })
+        .unzip()
+}
+
 impl<S: Scalar> Unfolding<S> {
-    pub(crate) fn new(mesh: &TriMesh) -> Self {
+    /// The unfolding of `mesh` for a propagation from `sources`.
+    pub(crate) fn new(mesh: &TriMesh, sources: &[SurfacePoint]) -> Self {
         let edge_count = mesh.edge_count();
+        let (reversed, anchored) = if S::frames_from_nearer_end() {
+            frames_near_sources(mesh, sources)
+        } else {
+            (vec![false; edge_count], vec![false; edge_count])
+        };
         let mut edge_length = Vec::with_capacity(edge_count);
         let mut zero_length = Vec::with_capacity(edge_count);
         let mut apex = vec![None; mesh.side_slot_count()];
@@ -156,23 +228,24 @@ impl<S: Scalar> Unfolding<S> {
                 .collect();
             FlatRegions::new(mesh, &points)
         }));
-        for (i, e) in mesh.edges().iter().enumerate() {
-            let frame = EdgeFrame::<S>::new(mesh, e.vertices[0], e.vertices[1]);
+        for i in 0..edge_count {
+            let e = EdgeId(i as u32);
+            let ends = frame_ends(mesh, &reversed, e);
+            let frame = EdgeFrame::<S>::new(mesh, ends[0], ends[1]);
             if frame.is_none() {
-                for v in e.vertices {
+                for v in ends {
                     has_twin[v.index()] = true;
                 }
             }
             edge_length.push(frame.as_ref().map_or_else(S::zero, EdgeFrame::length));
             zero_length.push(frame.is_none());
-            let e = EdgeId(i as u32);
-            let ends = mesh.edge(e).vertices;
             let backwards = frame
                 .as_ref()
                 .and_then(|_| EdgeFrame::<S>::new(mesh, ends[1], ends[0]));
             for side in mesh.sides(e) {
-                let wing = mesh.wing(e, side);
+                let wing = frame_wing(mesh, &reversed, e, side);
                 let in_region = wing
+                    .as_ref()
                     .zip(flat.as_ref())
                     .filter(|(w, r)| r.region(w.face).is_some());
                 apex[mesh.side_slot(e, side)] = match (in_region, frame.as_ref()) {
@@ -182,7 +255,7 @@ impl<S: Scalar> Unfolding<S> {
                     _ => frame
                         .as_ref()
                         .zip(backwards.as_ref())
-                        .zip(wing)
+                        .zip(wing.as_ref())
                         .map(|((f, b), wing)| Apex::new(mesh, [f, b], ends, wing.apex)),
                 };
             }
@@ -192,9 +265,61 @@ impl<S: Scalar> Unfolding<S> {
             zero_length,
             has_twin,
             apex,
+            reversed,
+            anchored,
             flat,
             scale: mesh.unit_scale(),
         }
+    }
+
+    /// Whether the frame of `e` runs from its `vertices[1]`.
+    #[inline]
+    pub(crate) fn is_reversed(&self, e: EdgeId) -> bool {
+        self.reversed[e.index()]
+    }
+
+    /// The ends of an edge in the order of its frame: x runs from the first to the second.
+    #[inline]
+    pub(crate) fn ends(&self, mesh: &TriMesh, e: EdgeId) -> [VertexId; 2] {
+        frame_ends(mesh, &self.reversed, e)
+    }
+
+    /// The face on `side` of `e` seen from the edge in the order of its frame: `near` joins
+    /// the frame's first end to the apex, `far` the apex to its second.
+    #[inline]
+    pub(crate) fn wing(&self, mesh: &TriMesh, e: EdgeId, side: Side) -> Option<Wing> {
+        frame_wing(mesh, &self.reversed, e, side)
+    }
+
+    /// The position in the frame of `e` of the point at fraction `t` from its `vertices[0]`.
+    pub(crate) fn at_fraction(&self, e: EdgeId, t: f64) -> S {
+        match self.is_reversed(e) {
+            false => S::from_f64(t) * self.length(e),
+            true => S::from_f64(1.0 - t) * self.length(e),
+        }
+    }
+
+    /// The position `x` in the frame of `e` as an offset from the edge's `vertices[0]`.
+    pub(crate) fn offset_from_first_vertex(&self, e: EdgeId, x: &S) -> S {
+        match self.is_reversed(e) {
+            false => x.clone(),
+            true => self.length(e).clone() - x,
+        }
+    }
+
+    /// The point at position `x` in the frame of `e`, in space (the model's coordinates),
+    /// placed from the frame's first end: to ulps of `x`, not of the edge's length.
+    pub(crate) fn edge_position(&self, mesh: &TriMesh, e: EdgeId, x: &S) -> DVec3 {
+        let [a, b] = self.ends(mesh, e).map(|v| mesh.position(v));
+        let t = (x.clone() / self.length(e)).to_f64().clamp(0.0, 1.0);
+        a + t * (b - a)
+    }
+
+    /// The point at position `x` in the frame of `e`, named by its fraction from `vertices[0]`.
+    pub(crate) fn edge_point(&self, e: EdgeId, x: &S) -> SurfacePoint {
+        let t = (x.clone() / self.length(e)).to_f64().clamp(0.0, 1.0);
+        let t = if self.is_reversed(e) { 1.0 - t } else { t };
+        SurfacePoint::Edge { edge: e, t }
     }
 
     /// The flat region of a face and the regions' frames, if the face lies in one and the
@@ -244,7 +369,7 @@ impl<S: Scalar> Unfolding<S> {
         if self.is_zero_length(e) {
             return None;
         }
-        let [v0, v1] = mesh.edge(e).vertices;
+        let [v0, v1] = self.ends(mesh, e);
         EdgeFrame::new(mesh, v0, v1).map(|frame| frame.planar(p))
     }
 
@@ -309,25 +434,33 @@ impl<S: Scalar> Unfolding<S> {
 
 /// A face laid out below an edge's line, ready to carry points into its other two edges' frames.
 pub(crate) struct FaceLayout<'a, S> {
-    /// The face and its other edges.
-    pub wing: &'a Wing,
+    /// The face and its other edges, in the order of the edge's frame.
+    pub wing: Wing,
     /// Length of the edge the layout hangs from.
     pub length: &'a S,
     /// Apex position along the edge.
     pub apex_x: &'a S,
-    /// Apex position along the edge from its `vertices[1]` backwards (`length - apex_x`, measured
-    /// from that end).
+    /// Apex position along the edge from the frame's second end backwards (`length - apex_x`,
+    /// measured from that end).
     pub apex_far_x: &'a S,
     /// Apex depth below the edge's line.
     pub apex_h: &'a S,
-    /// Length of the edge from the edge's `vertices[0]` to the apex.
+    /// Length of the edge from the frame's first end to the apex.
     pub near_length: &'a S,
-    /// Length of the edge from the apex to the edge's `vertices[1]`.
+    /// Length of the edge from the apex to the frame's second end.
     pub far_length: &'a S,
     /// Whether the near edge runs from the apex (its frame's x is measured from the apex).
     pub near_reversed: bool,
     /// Whether the far edge runs towards the apex.
     pub far_reversed: bool,
+    /// Whether points of the near edge are computed from the apex (its frame's first end) rather
+    /// than from the edge's first end: where the near edge is long beside the apex's distance
+    /// from the sources (see `Unfolding::anchored`), so that a point near the apex is not the
+    /// small difference of two lengths of the near edge.
+    pub near_from_apex: bool,
+    /// Likewise, whether points of the far edge are computed from the edge's second end rather
+    /// than from the apex.
+    pub far_from_end: bool,
 }
 
 impl<'a, S: Scalar> FaceLayout<'a, S> {
@@ -339,18 +472,22 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         e: EdgeId,
         side: Side,
     ) -> Option<Self> {
-        let wing = mesh.wing(e, side)?;
+        let wing = unfolding.wing(mesh, e, side)?;
         let apex = unfolding.apex(mesh, e, side)?;
+        let near_reversed = unfolding.ends(mesh, wing.near)[0] == wing.apex;
+        let far_reversed = unfolding.ends(mesh, wing.far)[0] != wing.apex;
         Some(FaceLayout {
-            wing,
             length: unfolding.length(e),
             apex_x: &apex.x,
             apex_far_x: &apex.far_x,
             apex_h: &apex.h,
             near_length: unfolding.length(wing.near),
             far_length: unfolding.length(wing.far),
-            near_reversed: mesh.edge(wing.near).vertices[0] == wing.apex,
-            far_reversed: mesh.edge(wing.far).vertices[0] != wing.apex,
+            near_reversed,
+            far_reversed,
+            near_from_apex: near_reversed && unfolding.anchored[wing.near.index()],
+            far_from_end: far_reversed && unfolding.anchored[wing.far.index()],
+            wing,
         })
     }
 
@@ -360,26 +497,61 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         self.wing.apex
     }
 
-    /// Where the line through `s` and `(b, 0)` meets the near edge, as a fraction from the
-    /// edge's `vertices[0]` towards the apex (not clamped).
+    /// Where the line through `s` and `(b, 0)` meets the near edge, as a fraction (not
+    /// clamped) from the frame's first end towards the apex, or from the apex backwards if
+    /// the near edge's points are computed from it ([`FaceLayout::near_ends`]).
     #[inline]
     pub(crate) fn near_hit(&self, s: &Planar<S>, b: &S) -> S {
         // Solve cross(d, t C - s) = 0 with d = (b - sx, -sy), C = (cx, -h).
         let dx = b.clone() - &s.x;
-        let num = b.clone() * &s.y;
-        let den = s.y.clone() * self.apex_x - dx * self.apex_h;
+        let den = s.y.clone() * self.apex_x - dx.clone() * self.apex_h;
+        let num = if self.near_from_apex {
+            // 1 - t, without the cancellation.
+            s.y.clone() * &(self.apex_x.clone() - b) - dx * self.apex_h
+        } else {
+            b.clone() * &s.y
+        };
         num / den
     }
 
-    /// Where the line through `s` and `(b, 0)` meets the far edge, as a fraction from the apex
-    /// towards the edge's `vertices[1]` (not clamped).
+    /// Where the line through `s` and `(b, 0)` meets the far edge, as a fraction (not clamped)
+    /// from the apex towards the frame's second end, or from that end backwards if the far
+    /// edge's points are computed from it ([`FaceLayout::far_ends`]).
     #[inline]
     pub(crate) fn far_hit(&self, s: &Planar<S>, b: &S) -> S {
         let dx = b.clone() - &s.x;
-        let num =
-            dx.clone() * &(s.y.clone() + self.apex_h) + s.y.clone() * &(s.x.clone() - self.apex_x);
-        let den = dx * self.apex_h + s.y.clone() * self.apex_far_x;
+        let den = dx.clone() * self.apex_h + s.y.clone() * self.apex_far_x;
+        let num = if self.far_from_end {
+            // 1 - u, without the cancellation.
+            s.y.clone() * &(self.length.clone() - b)
+        } else {
+            dx * &(s.y.clone() + self.apex_h) + s.y.clone() * &(s.x.clone() - self.apex_x)
+        };
         num / den
+    }
+
+    /// The fractions of [`FaceLayout::near_hit`] at the near edge's two ends: the frame's
+    /// first end and the apex.
+    #[inline]
+    pub(crate) fn near_ends(&self) -> [S; 2] {
+        let (zero, one) = (S::zero(), S::from_f64(1.0));
+        if self.near_from_apex {
+            [one, zero]
+        } else {
+            [zero, one]
+        }
+    }
+
+    /// The fractions of [`FaceLayout::far_hit`] at the far edge's two ends: the apex and the
+    /// frame's second end.
+    #[inline]
+    pub(crate) fn far_ends(&self) -> [S; 2] {
+        let (zero, one) = (S::zero(), S::from_f64(1.0));
+        if self.far_from_end {
+            [one, zero]
+        } else {
+            [zero, one]
+        }
     }
 
     /// Where the ray from `s` (above the edge's line) through the point `b` of the edge passes
@@ -419,8 +591,17 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
     #[inline]
     pub(crate) fn to_near(&self, s: &Planar<S>) -> Planar<S> {
         let a = self.near_length;
-        let x = (s.x.clone() * self.apex_x - s.y.clone() * self.apex_h) / a;
         let y = (self.apex_x.clone() * &s.y + self.apex_h.clone() * &s.x) / a;
+        if self.near_from_apex {
+            // Along the near edge from the apex: (s - C) . (-C) / a with C = (cx, -h).
+            let from_apex = (s.y.clone() + self.apex_h) * self.apex_h
+                - (s.x.clone() - self.apex_x) * self.apex_x;
+            return Planar {
+                x: from_apex / a,
+                y,
+            };
+        }
+        let x = (s.x.clone() * self.apex_x - s.y.clone() * self.apex_h) / a;
         if self.near_reversed {
             Planar {
                 x: a.clone() - x,
@@ -436,6 +617,15 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
     pub(crate) fn to_far(&self, s: &Planar<S>) -> Planar<S> {
         let b = self.far_length;
         let ux = self.apex_far_x.clone();
+        if self.far_from_end {
+            // From the frame's second end E = (length, 0) rather than from the apex C, with
+            // C - E = (-far_x, -h): along the edge (s - E) . (C - E) / b, across it
+            // (E - C) x (s - E) / b.
+            let back = self.length.clone() - &s.x;
+            let x = back.clone() * &ux - s.y.clone() * self.apex_h;
+            let y = ux * &s.y + back * self.apex_h;
+            return Planar { x: x / b, y: y / b };
+        }
         let sx = s.x.clone() - self.apex_x;
         let sy = s.y.clone() + self.apex_h;
         let x = (sx.clone() * &ux + sy.clone() * self.apex_h) / b;
@@ -450,24 +640,24 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         }
     }
 
-    /// A fraction `t` along the near edge (from the edge's `vertices[0]` to the apex) as a
+    /// A fraction `t` along the near edge (as [`FaceLayout::near_hit`] measures it) as a
     /// position in the near edge's frame.
     #[inline]
     pub(crate) fn near_position(&self, t: &S) -> S {
         let x = t.clone() * self.near_length;
-        if self.near_reversed {
+        if self.near_reversed && !self.near_from_apex {
             self.near_length.clone() - x
         } else {
             x
         }
     }
 
-    /// A fraction `u` along the far edge (from the apex to the edge's `vertices[1]`) as a
+    /// A fraction `u` along the far edge (as [`FaceLayout::far_hit`] measures it) as a
     /// position in the far edge's frame.
     #[inline]
     pub(crate) fn far_position(&self, u: &S) -> S {
         let x = u.clone() * self.far_length;
-        if self.far_reversed {
+        if self.far_reversed && !self.far_from_end {
             self.far_length.clone() - x
         } else {
             x
@@ -486,7 +676,7 @@ mod tests {
         // A unit square split along its diagonal from v0 = (0, 0) to v3 = (1, 1); the face
         // below the diagonal has its apex at v1 = (1, 0).
         let mesh = crate::mesh::shapes::grid(1, 1, 1.0, 1.0);
-        let unfolding = Unfolding::<S>::new(&mesh);
+        let unfolding = Unfolding::<S>::new(&mesh, &[]);
         let e = mesh
             .edge_between(VertexId(0), VertexId(3))
             .expect("the diagonal");
@@ -521,7 +711,7 @@ mod tests {
             vec![[0, 1, 2]],
         )
         .expect("a degenerate face is a usable mesh");
-        let unfolding = Unfolding::<Real>::new(&mesh);
+        let unfolding = Unfolding::<Real>::new(&mesh, &[]);
         let e = mesh
             .edge_between(VertexId(0), VertexId(2))
             .expect("the zero-length edge");

@@ -46,6 +46,12 @@ impl Resolution {
     /// of its own: its ends are constructions, and a crossing near a double root of eq. (2) is
     /// rounded far more than one ulp.
     pub const EXTENT: f64 = 4096.0 * f64::EPSILON;
+    /// Slack, as a fraction of the edge's length (`2^-46`, about 1.4e-14), when asking
+    /// whether a point lies in a range: the ends are rounded constructions, computed from the
+    /// end of the edge nearer the sources ([`Scalar::frames_from_nearer_end`]). The coarser
+    /// [`Resolution::EXTENT`] let wedges claim vertices beyond their ranges on edges 1e8 times
+    /// longer than the distances at hand, 3e-6 of a distance short.
+    pub const WITHIN: f64 = 64.0 * f64::EPSILON;
 }
 
 /// An `f64` whose predicates are exact for its value.
@@ -196,6 +202,11 @@ impl Scalar for Adaptive {
     }
 
     #[inline(always)]
+    fn frames_from_nearer_end() -> bool {
+        true
+    }
+
+    #[inline(always)]
     fn sign(&self) -> Sign {
         sign_of(self.0)
     }
@@ -215,13 +226,13 @@ impl Scalar for Adaptive {
         hi.0 - lo.0 > Resolution::EXTENT * scale.0
     }
 
-    /// At the resolution of the range's ends ([`Resolution::EXTENT`]): the ends are
+    /// At the resolution of the range's ends ([`Resolution::WITHIN`]): the ends are
     /// constructions, and two wedges whose ranges meet at a ray through a vertex (exactly, on
     /// the surface) meet with a gap or overlap of a few ulps once rounded; a vertex in such a
     /// gap must still be reached by both.
     #[inline(always)]
     fn within(x: &Self, lo: &Self, hi: &Self, scale: &Self) -> bool {
-        let slack = Resolution::EXTENT * scale.0;
+        let slack = Resolution::WITHIN * scale.0;
         x.0 >= lo.0 - slack && x.0 <= hi.0 + slack
     }
 

@@ -16,14 +16,19 @@ impl FloatTolerance {
     /// (~1e-15), and small: a tie decides who owns a whole piece of an edge, so on slivers whose
     /// edges are 1e8 times the distances at hand, a tie of 1e-12 gave away pieces worth 20 %.
     pub const DISTANCE: f64 = 1e-14;
-    /// Wedges shorter than this fraction of their edge are dropped: their rays are numerically
-    /// parallel and they cannot carry a distance their neighbours do not.
-    pub const EXTENT: f64 = 1e-11;
-    /// Slack, as a fraction of the edge length, when asking whether a point lies in a wedge's
-    /// range; covers the rounding of unfolded coordinates (thousands of ulps). Larger slack
+    /// Wedges shorter than this fraction of their edge (`2^-40`, about 9.1e-13, as the
+    /// adaptive backend's [`Resolution::EXTENT`](super::Resolution::EXTENT)) are
+    /// dropped: their rays are numerically parallel and they cannot carry a distance their
+    /// neighbours do not. Positions are computed from the end of the edge nearer the sources
+    /// ([`Scalar::frames_from_nearer_end`]), to ulps of the distances at hand; on an edge 1e8
+    /// times longer than those, 1e-11 of it dropped ranges that carried 7e-5 of a distance.
+    pub const EXTENT: f64 = 4096.0 * f64::EPSILON;
+    /// Slack, as a fraction of the edge length (`2^-46`, about 1.4e-14), when asking whether a
+    /// point lies in a wedge's range; covers the rounding of unfolded coordinates. Larger slack
     /// lets a wedge claim vertices beyond its range: on slivers a thousand times longer than
-    /// the distances at hand, 1e-9 gave distances 2 % short.
-    pub const WITHIN: f64 = 1e-12;
+    /// the distances at hand, 1e-9 gave distances 2 % short, and on edges 1e8 times longer,
+    /// 1e-12 gave 3e-7.
+    pub const WITHIN: f64 = 64.0 * f64::EPSILON;
     /// Two wedges whose pseudo-sources and sigmas agree to this fraction of the range's scale
     /// have the same distance function: eq. (2) has infinitely many solutions.
     pub const SAME_SOURCE: f64 = 1e-12;
@@ -61,6 +66,11 @@ impl Scalar for f64 {
     #[inline(always)]
     fn at_least(value: f64, bound: impl FnOnce() -> f64) -> f64 {
         value.max(bound())
+    }
+
+    #[inline(always)]
+    fn frames_from_nearer_end() -> bool {
+        true
     }
 
     #[inline(always)]

@@ -231,6 +231,18 @@ pub trait Scalar: Field {
         value
     }
 
+    /// Whether an edge far longer than its nearer end's distance from the sources has its frame
+    /// start at that end rather than at its `vertices[0]`. A number type that rounds its
+    /// constructions knows a position along an edge to ulps of its offset from the frame's
+    /// origin: on an edge 1e8 long, a point one unit from the far end is known to 1e-8 only,
+    /// and so is every distance unfolded through it, while the geodesics near the sources (the
+    /// short distances, which need the finest resolution) pass near the nearer end. The default, right for exact number types,
+    /// keeps the mesh's order, on which their kept expressions and flat regions are built.
+    #[inline(always)]
+    fn frames_from_nearer_end() -> bool {
+        false
+    }
+
     /// Starts a propagation on this thread: a backend with a precision cap takes
     /// `precision_cap` as this thread's (if given), and resets what belongs to one run.
     #[inline(always)]

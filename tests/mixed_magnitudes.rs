@@ -1,0 +1,67 @@
+//! Issue 10, point 4: meshes whose x coordinates are multiplied, vertex by vertex, by powers of
+//! ten from 1e-8 to 1e8, so that slivers 1e8 long border the short geodesics near the sources.
+//! On each mesh below a float backend once broke an invariant: a distance 1e-9 to 1e-2 away
+//! from the exact backend's, a symmetry, or a traced path's length. The exact backend is the
+//! ground truth: every vertex distance of the float backend must agree with it within 1e-9,
+//! and every other invariant of `degeneracy::check_invariants` must hold.
+
+use exact_geodesics::degeneracy::{
+    check_invariants, degenerate_case, DegenerateKind, MeshSize, Tolerances,
+};
+use exact_geodesics::scalar::{Adaptive, Real};
+use exact_geodesics::{Scalar, VertexId};
+
+/// Checks backend `S` against the exact backend from sources `a` and `b` of the mixed-magnitude
+/// mesh of `seed` (150 faces at most).
+fn keeps_invariants_against_exact<S: Scalar>(seed: u64, a: u32, b: u32) {
+    let case = degenerate_case(DegenerateKind::MixedMagnitudes, seed, MeshSize::Full);
+    let report = check_invariants::<S, Real>(
+        &case.mesh,
+        VertexId(a),
+        VertexId(b),
+        seed,
+        &Tolerances::FLOAT,
+    );
+    assert!(
+        report.violations.is_empty(),
+        "seed {seed}, sources v{a} and v{b}: {:#?}",
+        report.violations
+    );
+}
+
+/// `name: seed, a, b;` checked in f64 and in the adaptive backend.
+macro_rules! mixed_magnitudes {
+    ($($name:ident: $seed:literal, $a:literal, $b:literal;)*) => {$(
+        mod $name {
+            use super::*;
+
+            #[test]
+            fn f64_agrees_with_exact() {
+                keeps_invariants_against_exact::<f64>($seed, $a, $b);
+            }
+
+            #[test]
+            fn adaptive_agrees_with_exact() {
+                keeps_invariants_against_exact::<Adaptive>($seed, $a, $b);
+            }
+        }
+    )*};
+}
+
+mixed_magnitudes! {
+    // Positions measured from the far end of edges 6e8 long: both float backends 3e-8 short.
+    seed_32_frames_start_at_the_end_near_the_source: 32, 1, 9;
+    // Adaptive decided on positions rounded to 1e-7 and lost a wedge: 0.8 % long.
+    seed_726_rounded_far_positions_lose_no_wedge: 726, 29, 44;
+    // f64 dropped a range 1e-3 long on an edge of 1e8: 7e-5 long.
+    seed_66_short_ranges_on_long_edges_are_kept: 66, 23, 5;
+    // Wedges claimed vertices 1e-4 beyond their ranges: f64 3e-7 short, adaptive 3e-6.
+    seed_877_vertices_beyond_a_range_stay_outside: 877, 49, 0;
+    seed_362_vertices_beyond_a_range_stay_outside: 362, 12, 31;
+    // A pseudo-source carried onto an edge whose frame starts 3e8 from the apex: 3e-8 short.
+    seed_290_unfolded_from_the_far_edges_own_end: 290, 7, 41;
+    // Its height measured from an apex 4e8 away: asymmetric by 1e-9.
+    seed_204_heights_from_the_far_edges_own_end: 204, 55, 46;
+    // A path 1e-4 from two vertices sent through them: 9e-9 longer than the distance.
+    seed_126_paths_pass_beside_vertices: 126, 44, 34;
+}
