@@ -302,3 +302,63 @@ impl<S: Scalar> WedgeLists<S> {
         stats.peak_wedge_bytes = stats.peak_wedge_bytes.max(bytes);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::{Side, SourceId};
+    use crate::mmp::PseudoSource;
+
+    /// Records the queue events and ignores the vertices reached.
+    #[derive(Default)]
+    struct Events(Vec<WedgeRef>);
+
+    impl Arrivals<f64> for Events {
+        fn queue(&mut self, at: WedgeRef, _wedge: &Wedge<f64>) {
+            self.0.push(at);
+        }
+        fn reach(&mut self, _v: VertexId, _d: f64, _w: &Wedge<f64>) {}
+    }
+
+    /// A wedge on `[b0, b1]` of edge 0 (of length 1) from a pseudo-source above `x` at `sigma`.
+    fn wedge([b0, b1]: [f64; 2], x: f64, sigma: f64) -> Wedge<f64> {
+        Wedge {
+            edge: EdgeId(0),
+            b0,
+            b1,
+            source_x: x,
+            source_y: 1.0,
+            sigma,
+            tau: Side::FIRST,
+            pseudo_source: PseudoSource::Source(SourceId(0)),
+            source: SourceId(0),
+        }
+    }
+
+    #[test]
+    fn an_event_finds_its_wedge_after_others_moved_it_and_is_stale_once_it_left() {
+        let mut lists = WedgeLists::<f64>::new(1, false);
+        let (mut stats, mut events) = (Stats::default(), Events::default());
+        let edge = (&1.0, [VertexId(0), VertexId(1)]);
+        let mut insert = |lists: &mut WedgeLists<f64>, w: Wedge<f64>, events: &mut Events| {
+            lists.insert((w, Provenance::default()), edge, &mut stats, events);
+        };
+        insert(&mut lists, wedge([0.4, 0.6], 0.5, 0.0), &mut events);
+        insert(&mut lists, wedge([0.6, 1.0], 0.8, 0.5), &mut events);
+        // Two wedges before the first one move it two places to the right.
+        insert(&mut lists, wedge([0.0, 0.2], 0.1, 0.0), &mut events);
+        insert(&mut lists, wedge([0.2, 0.4], 0.3, 0.0), &mut events);
+        // A wedge nearer than the second one everywhere takes its whole range.
+        insert(&mut lists, wedge([0.6, 1.0], 0.8, 0.0), &mut events);
+        let [first, second, ..] = events.0[..] else {
+            panic!("five queue events, got {}", events.0.len());
+        };
+        match lists.due(first, 1.0) {
+            Due::Now(w, _) => assert_eq!([w.b0, w.b1], [0.4, 0.6]),
+            _ => panic!("the first wedge is due"),
+        }
+        // Propagated once: its event is stale from then on, as is that of the wedge that left.
+        assert!(matches!(lists.due(first, 1.0), Due::Stale));
+        assert!(matches!(lists.due(second, 1.0), Due::Stale));
+    }
+}
