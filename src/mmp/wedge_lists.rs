@@ -9,27 +9,77 @@ use super::edge_wedges::EdgeWedges;
 use super::intersect::{cut_into_pieces, Owner, Piece};
 use super::provenance::Provenance;
 use super::stats::Stats;
-use super::wedge::Wedge;
-use crate::mesh::{EdgeId, VertexId};
+use super::wedge::{PseudoSource, Wedge};
+use crate::mesh::{EdgeId, Side, SourceId, VertexId};
 use crate::scalar::{Scalar, Site};
 use std::cmp::Ordering;
 use std::ops::Range;
 
-/// A wedge of an edge list.
+/// A wedge of an edge list: the wedge but its edge (the list's), which leaves room in its
+/// padding for the rest (64 bytes in the `f64` engine, not 72), what it keeps of its
+/// construction, and where it is in its propagation.
 #[derive(Clone, Debug)]
 struct Entry<S: Scalar> {
-    wedge: Wedge<S>,
-    kept: Provenance<S>,
+    b0: S,
+    b1: S,
+    source_x: S,
+    source_y: S,
+    sigma: S,
+    pseudo_source: PseudoSource,
+    source: SourceId,
+    tau: Side,
     /// Whether the wedge waits in the queue (else it was propagated).
     queued: bool,
     /// The wedge's number on its edge, which its queue event names: a new one for each wedge
     /// the edge receives (the numbers wrap around after 2^32 wedges on one edge).
     serial: u32,
+    kept: Provenance<S>,
+}
+
+impl<S: Scalar> Entry<S> {
+    /// A wedge waiting in the queue under `serial`.
+    fn new(w: Wedge<S>, kept: Provenance<S>, serial: u32) -> Self {
+        Entry {
+            b0: w.b0,
+            b1: w.b1,
+            source_x: w.source_x,
+            source_y: w.source_y,
+            sigma: w.sigma,
+            pseudo_source: w.pseudo_source,
+            source: w.source,
+            tau: w.tau,
+            queued: true,
+            serial,
+            kept,
+        }
+    }
+
+    /// The wedge, on `edge`.
+    fn wedge(&self, edge: EdgeId) -> Wedge<S> {
+        self.clone().into_wedge(edge)
+    }
+
+    /// The wedge, on `edge`, out of the entry.
+    fn into_wedge(self, edge: EdgeId) -> Wedge<S> {
+        Wedge {
+            edge,
+            b0: self.b0,
+            b1: self.b1,
+            source_x: self.source_x,
+            source_y: self.source_y,
+            sigma: self.sigma,
+            tau: self.tau,
+            pseudo_source: self.pseudo_source,
+            source: self.source,
+        }
+    }
 }
 
 /// Reusable buffers of the intersection, kept across insertions to avoid allocating.
 struct Scratch<S: Scalar> {
     pieces: Vec<Piece<S>>,
+    /// The overlapped wedges, as wedges.
+    overlapped: Vec<Wedge<S>>,
     /// Whether a piece of each overlapped wedge took its serial (and so its queue event).
     named: Vec<bool>,
     /// The rebuilt stretch of the list.
@@ -40,6 +90,7 @@ impl<S: Scalar> Default for Scratch<S> {
     fn default() -> Self {
         Scratch {
             pieces: Vec::new(),
+            overlapped: Vec::new(),
             named: Vec::new(),
             fresh: Vec::new(),
         }
@@ -129,12 +180,13 @@ impl<S: Scalar> WedgeLists<S> {
         if !entry.queued {
             return Due::Stale;
         }
-        let now = entry.wedge.min_distance().to_f64();
+        let wedge = entry.wedge(at.edge);
+        let now = wedge.min_distance().to_f64();
         if now > key {
             return Due::Later(now);
         }
         entry.queued = false;
-        Due::Now(entry.wedge.clone(), entry.kept.clone())
+        Due::Now(wedge, entry.kept.clone())
     }
 
     /// The final wedges of every edge, each list exactly sized, moved out of their entries.
@@ -142,7 +194,11 @@ impl<S: Scalar> WedgeLists<S> {
         EdgeWedges::new(
             self.lists
                 .into_iter()
-                .map(|list| list.into_iter().map(|x| x.wedge).collect())
+                .enumerate()
+                .map(|(e, list)| {
+                    let e = EdgeId(e as u32);
+                    list.into_iter().map(|x| x.into_wedge(e)).collect()
+                })
                 .collect(),
         )
     }
@@ -165,20 +221,21 @@ impl<S: Scalar> WedgeLists<S> {
             return;
         }
         let list = &self.lists[e.index()];
-        let first = list.partition_point(|x| x.wedge.b1.compare(&w.b0) != Ordering::Greater);
+        let first = list.partition_point(|x| x.b1.compare(&w.b0) != Ordering::Greater);
         let end = first
             + list[first..]
                 .iter()
-                .take_while(|x| x.wedge.b0.compare(&w.b1) == Ordering::Less)
+                .take_while(|x| x.b0.compare(&w.b1) == Ordering::Less)
                 .count();
         let mut pieces = std::mem::take(&mut self.scratch.pieces);
         pieces.clear();
+        let overlapped = &mut self.scratch.overlapped;
+        overlapped.clear();
+        overlapped.extend(list[first..end].iter().map(|x| x.wedge(e)));
         let log = self.record_decisions.then_some(&mut stats.decisions);
         // An overlapped wedge is named by its place among the overlapped ones.
-        let overlapping = list[first..end]
-            .iter()
-            .enumerate()
-            .map(|(k, x)| (k as u32, &x.wedge, &x.kept));
+        let overlapping = (0..).zip(overlapped.iter().zip(&list[first..end]));
+        let overlapping = overlapping.map(|(k, (w, x))| (k, w, &x.kept));
         let new = (&w, &kept);
         cut_into_pieces(&mut stats.eq2, log, &mut pieces, overlapping, new, length);
         if pieces.iter().any(|p| p.owner == Owner::New) {
@@ -211,9 +268,9 @@ impl<S: Scalar> WedgeLists<S> {
             s
         };
         // The name of the entry that will be the `i`-th of the rebuilt stretch.
-        let name = |entry: &Entry<S>, i: usize| WedgeRef {
+        let name = |serial: u32, i: usize| WedgeRef {
             edge: e,
-            serial: entry.serial,
+            serial,
             place: (first + i) as u32,
         };
         let Scratch { named, fresh, .. } = &mut self.scratch;
@@ -223,10 +280,10 @@ impl<S: Scalar> WedgeLists<S> {
         let mine = w.distance_function();
         // Which range ends of a wedge a piece keeps (asked only where anchors depend on it).
         let anchored = |k: &Provenance<S>| k.anchor(0).is_some() || k.anchor(1).is_some();
-        let keeps = |w: &Wedge<S>, lo: &S, hi: &S| {
+        let keeps = |[b0, b1]: [&S; 2], lo: &S, hi: &S| {
             [
-                w.b0.compare(lo) == Ordering::Equal,
-                w.b1.compare(hi) == Ordering::Equal,
+                b0.compare(lo) == Ordering::Equal,
+                b1.compare(hi) == Ordering::Equal,
             ]
         };
         for piece in pieces.drain(..) {
@@ -244,7 +301,7 @@ impl<S: Scalar> WedgeLists<S> {
                         arrivals.reach(v1, d, w);
                     }
                     let piece_kept = if anchored(kept) {
-                        kept.trimmed(keeps(w, &piece.lo, &piece.hi))
+                        kept.trimmed(keeps([&w.b0, &w.b1], &piece.lo, &piece.hi))
                     } else {
                         kept.clone()
                     };
@@ -252,29 +309,24 @@ impl<S: Scalar> WedgeLists<S> {
                     wedge.b0 = piece.lo;
                     wedge.b1 = piece.hi;
                     stats.wedges_created += 1;
-                    let entry = Entry {
-                        wedge,
-                        kept: piece_kept,
-                        queued: true,
-                        serial: next_serial(),
-                    };
-                    arrivals.queue(name(&entry, fresh.len()), &entry.wedge);
-                    entry
+                    let serial = next_serial();
+                    arrivals.queue(name(serial, fresh.len()), &wedge);
+                    Entry::new(wedge, piece_kept, serial)
                 }
                 Owner::Old(k) => {
                     let k = k as usize;
                     let mut entry = list[first + k].clone();
-                    let kept_ends = keeps(&entry.wedge, &piece.lo, &piece.hi);
+                    let kept_ends = keeps([&entry.b0, &entry.b1], &piece.lo, &piece.hi);
                     if kept_ends != [true, true] {
                         entry.kept = entry.kept.trimmed(kept_ends);
-                        entry.wedge.b0 = piece.lo;
-                        entry.wedge.b1 = piece.hi;
+                        entry.b0 = piece.lo;
+                        entry.b1 = piece.hi;
                     }
                     if named[k] {
                         entry.serial = next_serial();
                         stats.wedges_created += 1;
                         if entry.queued {
-                            arrivals.queue(name(&entry, fresh.len()), &entry.wedge);
+                            arrivals.queue(name(entry.serial, fresh.len()), &entry.wedge(e));
                         }
                     }
                     named[k] = true;
@@ -333,6 +385,11 @@ mod tests {
             pseudo_source: PseudoSource::Source(SourceId(0)),
             source: SourceId(0),
         }
+    }
+
+    #[test]
+    fn an_entry_of_the_f64_engine_takes_64_bytes() {
+        assert_eq!(std::mem::size_of::<Entry<f64>>(), 64);
     }
 
     #[test]
