@@ -56,18 +56,13 @@ impl<S: Scalar> Entry<S> {
 
     /// The wedge, on `edge`.
     fn wedge(&self, edge: EdgeId) -> Wedge<S> {
-        self.clone().into_wedge(edge)
-    }
-
-    /// The wedge, on `edge`, out of the entry.
-    fn into_wedge(self, edge: EdgeId) -> Wedge<S> {
         Wedge {
             edge,
-            b0: self.b0,
-            b1: self.b1,
-            source_x: self.source_x,
-            source_y: self.source_y,
-            sigma: self.sigma,
+            b0: self.b0.clone(),
+            b1: self.b1.clone(),
+            source_x: self.source_x.clone(),
+            source_y: self.source_y.clone(),
+            sigma: self.sigma.clone(),
             tau: self.tau,
             pseudo_source: self.pseudo_source,
             source: self.source,
@@ -197,7 +192,7 @@ impl<S: Scalar> WedgeLists<S> {
                 .enumerate()
                 .map(|(e, list)| {
                     let e = EdgeId(e as u32);
-                    list.into_iter().map(|x| x.into_wedge(e)).collect()
+                    list.into_iter().map(|x| x.wedge(e)).collect()
                 })
                 .collect(),
         )
