@@ -15,9 +15,9 @@ use crate::scalar::{Scalar, Site};
 use std::cmp::Ordering;
 use std::ops::Range;
 
-/// A wedge of an edge list: the wedge but its edge (the list's), which leaves room in its
-/// padding for the rest (64 bytes in the `f64` engine, not 72), what it keeps of its
-/// construction, and where it is in its propagation.
+/// A wedge of an edge list: the wedge's fields but its edge (the list's), so that the queue
+/// state and the serial fit where the wedge has padding (64 bytes in the `f64` engine, not
+/// 72), and what the wedge keeps of its construction.
 #[derive(Clone, Debug)]
 struct Entry<S: Scalar> {
     b0: S,
@@ -93,7 +93,7 @@ impl<S: Scalar> Default for Scratch<S> {
 }
 
 /// How a queue event names its wedge: by its edge and serial, with the place it had in the
-/// edge's list when it was queued (where it usually still is) to find it without a search.
+/// edge's list when it was queued, where the search for it starts.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct WedgeRef {
     edge: EdgeId,
