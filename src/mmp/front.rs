@@ -5,6 +5,7 @@
 use super::source::SurfacePoint;
 use super::unfold::Unfolding;
 use super::wedge::Wedge;
+use super::wedge_lists::WedgeRef;
 use crate::mesh::{SourceId, TriMesh, VertexId};
 use crate::scalar::Scalar;
 use std::cmp::Ordering;
@@ -18,11 +19,11 @@ pub(crate) struct VertexDistance<S> {
     pub(crate) source: SourceId,
 }
 
-/// What an event is about: the wedge in a slot of the edge lists (as long as the slot is still
-/// of that generation), or a vertex whose distance may have improved.
+/// What an event is about: a wedge of an edge list (as long as it is there), or a vertex whose
+/// distance may have improved.
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum EventKind {
-    Wedge { slot: u32, generation: u32 },
+    Wedge(WedgeRef),
     Vertex(VertexId),
 }
 
@@ -85,12 +86,12 @@ impl<S: Scalar> Front<S> {
         self.queue.push(Event { key, ..event });
     }
 
-    /// Queues the wedge in `slot`, of `generation`, at the smallest distance it gives.
-    pub(crate) fn push_wedge(&mut self, slot: u32, generation: u32, wedge: &Wedge<S>) {
+    /// Queues the wedge named `at` at the smallest distance it gives.
+    pub(crate) fn push_wedge(&mut self, at: WedgeRef, wedge: &Wedge<S>) {
         let key = wedge.min_distance().to_f64();
         self.queue.push(Event {
             key,
-            kind: EventKind::Wedge { slot, generation },
+            kind: EventKind::Wedge(at),
         });
         self.peak_queue = self.peak_queue.max(self.queue.len());
     }

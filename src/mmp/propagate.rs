@@ -14,7 +14,7 @@ use super::stats::Stats;
 use super::stop::StopPoints;
 use super::unfold::{FaceLayout, Unfolding};
 use super::wedge::{PseudoSource, Wedge};
-use super::wedge_lists::{Arrivals, Due, WedgeLists};
+use super::wedge_lists::{Arrivals, Due, WedgeLists, WedgeRef};
 use crate::mesh::{EdgeId, FaceId, Side, SourceId, TriMesh, VertexId};
 use crate::scalar::{Scalar, Sign, Site};
 use std::cmp::Ordering;
@@ -239,8 +239,8 @@ struct Reach<'a, S: Scalar> {
 }
 
 impl<S: Scalar> Arrivals<S> for Reach<'_, S> {
-    fn queue(&mut self, slot: u32, generation: u32, wedge: &Wedge<S>) {
-        self.front.push_wedge(slot, generation, wedge);
+    fn queue(&mut self, at: WedgeRef, wedge: &Wedge<S>) {
+        self.front.push_wedge(at, wedge);
     }
 
     fn reach(&mut self, v: VertexId, d: S, w: &Wedge<S>) {
@@ -292,16 +292,14 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 });
             }
             match event.kind {
-                EventKind::Wedge { slot, generation } => {
-                    match self.wedges.due(slot, generation, event.key) {
-                        Due::Stale => {}
-                        Due::Later(key) => self.front.requeue(event, key),
-                        Due::Now(wedge, kept) => {
-                            self.stats.wedges_propagated += 1;
-                            self.propagate_wedge(&wedge, &kept);
-                        }
+                EventKind::Wedge(at) => match self.wedges.due(at, event.key) {
+                    Due::Stale => {}
+                    Due::Later(key) => self.front.requeue(event, key),
+                    Due::Now(wedge, kept) => {
+                        self.stats.wedges_propagated += 1;
+                        self.propagate_wedge(&wedge, &kept);
                     }
-                }
+                },
                 EventKind::Vertex(v) => {
                     if let Some((sigma, source)) = self.front.take_emission(v) {
                         self.stats.pseudo_source_emissions += 1;

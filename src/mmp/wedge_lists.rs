@@ -1,66 +1,118 @@
-//! The wedges of every edge while a propagation runs [SSK+05 §4.2, LZT §4]: an arena of slots
-//! (each a wedge, what it keeps of its construction, and whether it waits in the queue), its
-//! free list, and each edge's list of slot ids, sorted along the edge and disjoint. A wedge
-//! arriving on an edge is cut into pieces with the wedges there by eq. (2)
-//! ([`intersect`](super::intersect)), and the list is rebuilt from the pieces.
+//! The wedges of every edge while a propagation runs [SSK+05 §4.2, LZT §4]: each edge's list
+//! of entries (a wedge, what it keeps of its construction, whether it waits in the queue),
+//! sorted along the edge and disjoint. A list is one piece of memory, so that placing a new
+//! wedge reads its edge's wedges and nothing else (on a shared arena, every step of that search
+//! was a cache miss). A wedge arriving on an edge is cut into pieces with the wedges there by
+//! eq. (2) ([`intersect`](super::intersect)), and the list is rebuilt from the pieces.
 
 use super::edge_wedges::EdgeWedges;
 use super::intersect::{cut_into_pieces, Owner, Piece};
 use super::provenance::Provenance;
 use super::stats::Stats;
-use super::wedge::Wedge;
-use crate::mesh::VertexId;
+use super::wedge::{PseudoSource, Wedge};
+use crate::mesh::{EdgeId, Side, SourceId, VertexId};
 use crate::scalar::{Scalar, Site};
 use std::cmp::Ordering;
 use std::ops::Range;
 
-/// Where a wedge of the arena is in its propagation.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum SlotState {
-    Queued,
-    Propagated,
-    Free,
+/// A wedge of an edge list: the wedge's fields but its edge (the list's), so that the queue
+/// state and the serial fit where the wedge has padding (64 bytes in the `f64` engine, not
+/// 72), and what the wedge keeps of its construction.
+#[derive(Clone, Debug)]
+struct Entry<S: Scalar> {
+    b0: S,
+    b1: S,
+    source_x: S,
+    source_y: S,
+    sigma: S,
+    pseudo_source: PseudoSource,
+    source: SourceId,
+    tau: Side,
+    /// Whether the wedge waits in the queue (else it was propagated).
+    queued: bool,
+    /// The wedge's number on its edge, which its queue event names: a new one for each wedge
+    /// the edge receives (the numbers wrap around after 2^32 wedges on one edge).
+    serial: u32,
+    kept: Provenance<S>,
 }
 
-/// A place of the arena: a wedge, or a free place waiting to be reused (a new generation each
-/// time, so that an event of the queue knows whether its wedge is still there).
-#[derive(Clone, Debug)]
-struct Slot<S: Scalar> {
-    wedge: Wedge<S>,
-    kept: Provenance<S>,
-    state: SlotState,
-    generation: u32,
+impl<S: Scalar> Entry<S> {
+    /// A wedge waiting in the queue under `serial`.
+    fn new(w: Wedge<S>, kept: Provenance<S>, serial: u32) -> Self {
+        Entry {
+            b0: w.b0,
+            b1: w.b1,
+            source_x: w.source_x,
+            source_y: w.source_y,
+            sigma: w.sigma,
+            pseudo_source: w.pseudo_source,
+            source: w.source,
+            tau: w.tau,
+            queued: true,
+            serial,
+            kept,
+        }
+    }
+
+    /// The wedge, on `edge`.
+    fn wedge(&self, edge: EdgeId) -> Wedge<S> {
+        Wedge {
+            edge,
+            b0: self.b0.clone(),
+            b1: self.b1.clone(),
+            source_x: self.source_x.clone(),
+            source_y: self.source_y.clone(),
+            sigma: self.sigma.clone(),
+            tau: self.tau,
+            pseudo_source: self.pseudo_source,
+            source: self.source,
+        }
+    }
 }
 
 /// Reusable buffers of the intersection, kept across insertions to avoid allocating.
-struct Scratch<S> {
+struct Scratch<S: Scalar> {
     pieces: Vec<Piece<S>>,
-    reused: Vec<u32>,
-    ids: Vec<u32>,
+    /// The overlapped wedges, as wedges.
+    overlapped: Vec<Wedge<S>>,
+    /// Whether a piece of each overlapped wedge took its serial (and so its queue event).
+    named: Vec<bool>,
+    /// The rebuilt stretch of the list.
+    fresh: Vec<Entry<S>>,
 }
 
-impl<S> Default for Scratch<S> {
+impl<S: Scalar> Default for Scratch<S> {
     fn default() -> Self {
         Scratch {
             pieces: Vec::new(),
-            reused: Vec::new(),
-            ids: Vec::new(),
+            overlapped: Vec::new(),
+            named: Vec::new(),
+            fresh: Vec::new(),
         }
     }
+}
+
+/// How a queue event names its wedge: by its edge and serial, with the place it had in the
+/// edge's list when it was queued, where the search for it starts.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct WedgeRef {
+    edge: EdgeId,
+    serial: u32,
+    place: u32,
 }
 
 /// What inserting a wedge tells the propagation: the wedges it queues and the vertices of the
 /// edge the new wedge reaches.
 pub(crate) trait Arrivals<S: Scalar> {
-    /// The wedge in `slot`, of `generation`, waits to be propagated.
-    fn queue(&mut self, slot: u32, generation: u32, wedge: &Wedge<S>);
+    /// The wedge `wedge`, named `at`, waits to be propagated.
+    fn queue(&mut self, at: WedgeRef, wedge: &Wedge<S>);
     /// The wedge `w` reaches the vertex `v` of its edge at distance `d`.
     fn reach(&mut self, v: VertexId, d: S, w: &Wedge<S>);
 }
 
 /// Whether the wedge of a queue event is due ([`WedgeLists::due`]).
 pub(crate) enum Due<S: Scalar> {
-    /// Its slot was freed or reused, or the wedge already propagated.
+    /// The wedge left its edge, or already propagated.
     Stale,
     /// The wedge was trimmed since it was queued: its smallest distance is now this key.
     Later(f64),
@@ -68,12 +120,34 @@ pub(crate) enum Due<S: Scalar> {
     Now(Wedge<S>, Provenance<S>),
 }
 
+/// The place of the wedge numbered `serial` in `list`, looking outwards from `place`: wedges
+/// inserted or removed before it since it was queued there moved it a little.
+fn find_near<S: Scalar>(list: &[Entry<S>], place: usize, serial: u32) -> Option<usize> {
+    let (mut left, mut right) = (place.min(list.len()), place.min(list.len()));
+    while left > 0 || right < list.len() {
+        if right < list.len() {
+            if list[right].serial == serial {
+                return Some(right);
+            }
+            right += 1;
+        }
+        if left > 0 {
+            left -= 1;
+            if list[left].serial == serial {
+                return Some(left);
+            }
+        }
+    }
+    None
+}
+
 /// The wedges of every edge of a running propagation.
 pub(crate) struct WedgeLists<S: Scalar> {
-    slots: Vec<Slot<S>>,
-    free: Vec<u32>,
-    lists: Vec<Vec<u32>>,
-    list_entries: usize,
+    lists: Vec<Vec<Entry<S>>>,
+    /// The serial of each edge's next wedge.
+    serials: Vec<u32>,
+    /// Wedges in all lists.
+    entries: usize,
     /// Keep a log of every meeting of two wedges ([`Stats::decisions`]).
     record_decisions: bool,
     scratch: Scratch<S>,
@@ -83,34 +157,45 @@ impl<S: Scalar> WedgeLists<S> {
     /// No wedge yet on any of `edge_count` edges.
     pub(crate) fn new(edge_count: usize, record_decisions: bool) -> Self {
         WedgeLists {
-            slots: Vec::new(),
-            free: Vec::new(),
-            lists: vec![Vec::new(); edge_count],
-            list_entries: 0,
+            lists: std::iter::repeat_with(Vec::new).take(edge_count).collect(),
+            serials: vec![0; edge_count],
+            entries: 0,
             record_decisions,
             scratch: Scratch::default(),
         }
     }
 
-    /// The wedge of the queue event of `slot` and `generation` popped at `key`, if it is due.
-    pub(crate) fn due(&mut self, slot: u32, generation: u32, key: f64) -> Due<S> {
-        let s = &mut self.slots[slot as usize];
-        if s.generation != generation || s.state != SlotState::Queued {
+    /// The wedge of a queue event popped at `key`, if it is due.
+    pub(crate) fn due(&mut self, at: WedgeRef, key: f64) -> Due<S> {
+        let list = &mut self.lists[at.edge.index()];
+        let Some(entry) = find_near(list, at.place as usize, at.serial).map(|i| &mut list[i])
+        else {
+            return Due::Stale;
+        };
+        if !entry.queued {
             return Due::Stale;
         }
-        let now = s.wedge.min_distance().to_f64();
+        let wedge = entry.wedge(at.edge);
+        let now = wedge.min_distance().to_f64();
         if now > key {
             return Due::Later(now);
         }
-        s.state = SlotState::Propagated;
-        Due::Now(s.wedge.clone(), s.kept.clone())
+        entry.queued = false;
+        Due::Now(wedge, entry.kept.clone())
     }
 
-    /// The final wedges, out of their slots and grouped by edge in place: copies would double
-    /// the peak memory.
+    /// The final wedges of every edge, each list exactly sized, moved out of their entries.
     pub(crate) fn into_edge_wedges(self) -> EdgeWedges<S> {
-        let arena = self.slots.into_iter().map(|s| s.wedge).collect();
-        EdgeWedges::group(arena, &self.lists)
+        EdgeWedges::new(
+            self.lists
+                .into_iter()
+                .enumerate()
+                .map(|(e, list)| {
+                    let e = EdgeId(e as u32);
+                    list.into_iter().map(|x| x.wedge(e)).collect()
+                })
+                .collect(),
+        )
     }
 
     /// Inserts a wedge on its edge (of the given length and vertices), intersecting it with
@@ -131,23 +216,21 @@ impl<S: Scalar> WedgeLists<S> {
             return;
         }
         let list = &self.lists[e.index()];
-        let first = list.partition_point(|&id| {
-            self.slots[id as usize].wedge.b1.compare(&w.b0) != Ordering::Greater
-        });
+        let first = list.partition_point(|x| x.b1.compare(&w.b0) != Ordering::Greater);
         let end = first
             + list[first..]
                 .iter()
-                .take_while(|&&id| {
-                    self.slots[id as usize].wedge.b0.compare(&w.b1) == Ordering::Less
-                })
+                .take_while(|x| x.b0.compare(&w.b1) == Ordering::Less)
                 .count();
         let mut pieces = std::mem::take(&mut self.scratch.pieces);
         pieces.clear();
+        let overlapped = &mut self.scratch.overlapped;
+        overlapped.clear();
+        overlapped.extend(list[first..end].iter().map(|x| x.wedge(e)));
         let log = self.record_decisions.then_some(&mut stats.decisions);
-        let overlapping = self.lists[e.index()][first..end].iter().map(|&id| {
-            let slot = &self.slots[id as usize];
-            (id, &slot.wedge, &slot.kept)
-        });
+        // An overlapped wedge is named by its place among the overlapped ones.
+        let overlapping = (0..).zip(overlapped.iter().zip(&list[first..end]));
+        let overlapping = overlapping.map(|(k, (w, x))| (k, w, &x.kept));
         let new = (&w, &kept);
         cut_into_pieces(&mut stats.eq2, log, &mut pieces, overlapping, new, length);
         if pieces.iter().any(|p| p.owner == Owner::New) {
@@ -157,7 +240,11 @@ impl<S: Scalar> WedgeLists<S> {
         self.scratch.pieces = pieces;
     }
 
-    /// Replaces the wedges `first..end` of the new wedge's edge list by the pieces.
+    /// Replaces the wedges `first..end` of the new wedge's edge list by the pieces. The first
+    /// piece of an existing wedge keeps its serial, and so its queue event (trimming only
+    /// raises its key, and the event is re-queued with the new key when it pops); a second
+    /// piece (the new wedge won in its middle) is a wedge of its own, cut from it as it was,
+    /// with the anchor of its end.
     fn rebuild(
         &mut self,
         (w, kept): (&Wedge<S>, &Provenance<S>),
@@ -168,38 +255,37 @@ impl<S: Scalar> WedgeLists<S> {
         arrivals: &mut impl Arrivals<S>,
     ) {
         let e = w.edge;
-        let mut reused = std::mem::take(&mut self.scratch.reused);
-        let mut ids = std::mem::take(&mut self.scratch.ids);
-        reused.clear();
-        ids.clear();
+        let list = &mut self.lists[e.index()];
+        let serial = &mut self.serials[e.index()];
+        let mut next_serial = || {
+            let s = *serial;
+            *serial = s.wrapping_add(1);
+            s
+        };
+        // The name of the entry that will be the `i`-th of the rebuilt stretch.
+        let name = |serial: u32, i: usize| WedgeRef {
+            edge: e,
+            serial,
+            place: (first + i) as u32,
+        };
+        let Scratch { named, fresh, .. } = &mut self.scratch;
+        named.clear();
+        named.resize(end - first, false);
         let zero = S::zero();
         let mine = w.distance_function();
         // Which range ends of a wedge a piece keeps (asked only where anchors depend on it).
         let anchored = |k: &Provenance<S>| k.anchor(0).is_some() || k.anchor(1).is_some();
-        let keeps = |w: &Wedge<S>, lo: &S, hi: &S| {
+        let keeps = |[b0, b1]: [&S; 2], lo: &S, hi: &S| {
             [
-                w.b0.compare(lo) == Ordering::Equal,
-                w.b1.compare(hi) == Ordering::Equal,
+                b0.compare(lo) == Ordering::Equal,
+                b1.compare(hi) == Ordering::Equal,
             ]
         };
-        // A wedge that keeps two pieces (the new one won in its middle: three pieces at least)
-        // is trimmed in place for the first: the second is cut from the wedge as it was, with
-        // the anchor of its end (only anchors depend on it).
-        let mut split: Vec<(u32, Wedge<S>, Provenance<S>)> = Vec::new();
-        if pieces.len() >= 3 {
-            for (i, p) in pieces.iter().enumerate() {
-                let Owner::Old(id) = p.owner else { continue };
-                let slot = &self.slots[id as usize];
-                if anchored(&slot.kept) && pieces[i + 1..].iter().any(|q| q.owner == p.owner) {
-                    split.push((id, slot.wedge.clone(), slot.kept.clone()));
-                }
-            }
-        }
         for piece in pieces.drain(..) {
             if !S::has_extent(&piece.lo, &piece.hi, length) {
                 continue;
             }
-            match piece.owner {
+            let entry = match piece.owner {
                 Owner::New => {
                     if S::within(&zero, &piece.lo, &piece.hi, length) {
                         let d = S::kept(&kept.at_ends[0]).unwrap_or_else(|| mine.at(&zero));
@@ -210,101 +296,121 @@ impl<S: Scalar> WedgeLists<S> {
                         arrivals.reach(v1, d, w);
                     }
                     let piece_kept = if anchored(kept) {
-                        kept.trimmed(keeps(w, &piece.lo, &piece.hi))
+                        kept.trimmed(keeps([&w.b0, &w.b1], &piece.lo, &piece.hi))
                     } else {
                         kept.clone()
                     };
                     let mut wedge = w.clone();
                     wedge.b0 = piece.lo;
                     wedge.b1 = piece.hi;
-                    let id = self.allocate(wedge, piece_kept, SlotState::Queued, stats);
-                    self.queue(id, arrivals);
-                    ids.push(id);
+                    stats.wedges_created += 1;
+                    let serial = next_serial();
+                    arrivals.queue(name(serial, fresh.len()), &wedge);
+                    Entry::new(wedge, piece_kept, serial)
                 }
-                Owner::Old(id) => {
-                    let slot = &self.slots[id as usize];
-                    let (original, original_kept) = split
-                        .iter()
-                        .find(|(i, ..)| *i == id)
-                        .map_or((&slot.wedge, &slot.kept), |(_, w, k)| (w, k));
-                    let kept_ends = keeps(original, &piece.lo, &piece.hi);
-                    let unchanged = kept_ends == [true, true];
-                    let state = slot.state;
-                    let target = if reused.contains(&id) {
-                        let mut wedge = original.clone();
-                        wedge.b0 = piece.lo;
-                        wedge.b1 = piece.hi;
-                        let kept = original_kept.trimmed(kept_ends);
-                        self.allocate(wedge, kept, state, stats)
-                    } else {
-                        reused.push(id);
-                        if !unchanged {
-                            // A trimmed wedge keeps its queue event: trimming only raises its
-                            // key, and the event is re-queued with the new key when it pops.
-                            let kept = original_kept.trimmed(kept_ends);
-                            let slot = &mut self.slots[id as usize];
-                            slot.wedge.b0 = piece.lo;
-                            slot.wedge.b1 = piece.hi;
-                            slot.kept = kept;
-                        }
-                        id
-                    };
-                    if state == SlotState::Queued && target != id {
-                        self.queue(target, arrivals);
+                Owner::Old(k) => {
+                    let k = k as usize;
+                    let mut entry = list[first + k].clone();
+                    let kept_ends = keeps([&entry.b0, &entry.b1], &piece.lo, &piece.hi);
+                    if kept_ends != [true, true] {
+                        entry.kept = entry.kept.trimmed(kept_ends);
+                        entry.b0 = piece.lo;
+                        entry.b1 = piece.hi;
                     }
-                    ids.push(target);
+                    if named[k] {
+                        entry.serial = next_serial();
+                        stats.wedges_created += 1;
+                        if entry.queued {
+                            arrivals.queue(name(entry.serial, fresh.len()), &entry.wedge(e));
+                        }
+                    }
+                    named[k] = true;
+                    entry
                 }
-            }
+            };
+            fresh.push(entry);
         }
-        for i in first..end {
-            let id = self.lists[e.index()][i];
-            if !reused.contains(&id) {
-                let slot = &mut self.slots[id as usize];
-                slot.state = SlotState::Free;
-                slot.generation = slot.generation.wrapping_add(1);
-                self.free.push(id);
+        self.entries = self.entries + fresh.len() - (end - first);
+        if fresh.len() == end - first {
+            for (old, new) in list[first..end].iter_mut().zip(fresh.drain(..)) {
+                *old = new;
             }
-        }
-        self.list_entries = self.list_entries + ids.len() - (end - first);
-        self.lists[e.index()].splice(first..end, ids.drain(..));
-        let bytes = self.slots.len() * std::mem::size_of::<Slot<S>>()
-            + self.list_entries * std::mem::size_of::<u32>()
-            + self.lists.len() * std::mem::size_of::<Vec<u32>>();
-        stats.peak_wedge_bytes = stats.peak_wedge_bytes.max(bytes);
-        self.scratch.reused = reused;
-        self.scratch.ids = ids;
-    }
-
-    /// Queues the wedge in `slot`.
-    fn queue(&self, slot: u32, arrivals: &mut impl Arrivals<S>) {
-        let s = &self.slots[slot as usize];
-        arrivals.queue(slot, s.generation, &s.wedge);
-    }
-
-    /// A slot for a wedge: a free one, or a new one.
-    fn allocate(
-        &mut self,
-        wedge: Wedge<S>,
-        kept: Provenance<S>,
-        state: SlotState,
-        stats: &mut Stats,
-    ) -> u32 {
-        stats.wedges_created += 1;
-        if let Some(id) = self.free.pop() {
-            let slot = &mut self.slots[id as usize];
-            slot.wedge = wedge;
-            slot.kept = kept;
-            slot.state = state;
-            slot.generation = slot.generation.wrapping_add(1);
-            id
         } else {
-            self.slots.push(Slot {
-                wedge,
-                kept,
-                state,
-                generation: 0,
-            });
-            (self.slots.len() - 1) as u32
+            let needed = list.len() + fresh.len() - (end - first);
+            if needed > list.capacity() {
+                // A run's memory is mostly these lists: they grow by a quarter, not double.
+                list.reserve_exact(needed + needed / 4 - list.len());
+            }
+            list.splice(first..end, fresh.drain(..));
         }
+        let bytes = self.entries * std::mem::size_of::<Entry<S>>()
+            + self.lists.len()
+                * (std::mem::size_of::<Vec<Entry<S>>>() + std::mem::size_of::<u32>());
+        stats.peak_wedge_bytes = stats.peak_wedge_bytes.max(bytes);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::{Side, SourceId};
+    use crate::mmp::PseudoSource;
+
+    /// Records the queue events and ignores the vertices reached.
+    #[derive(Default)]
+    struct Events(Vec<WedgeRef>);
+
+    impl Arrivals<f64> for Events {
+        fn queue(&mut self, at: WedgeRef, _wedge: &Wedge<f64>) {
+            self.0.push(at);
+        }
+        fn reach(&mut self, _v: VertexId, _d: f64, _w: &Wedge<f64>) {}
+    }
+
+    /// A wedge on `[b0, b1]` of edge 0 (of length 1) from a pseudo-source above `x` at `sigma`.
+    fn wedge([b0, b1]: [f64; 2], x: f64, sigma: f64) -> Wedge<f64> {
+        Wedge {
+            edge: EdgeId(0),
+            b0,
+            b1,
+            source_x: x,
+            source_y: 1.0,
+            sigma,
+            tau: Side::FIRST,
+            pseudo_source: PseudoSource::Source(SourceId(0)),
+            source: SourceId(0),
+        }
+    }
+
+    #[test]
+    fn an_entry_of_the_f64_engine_takes_64_bytes() {
+        assert_eq!(std::mem::size_of::<Entry<f64>>(), 64);
+    }
+
+    #[test]
+    fn an_event_finds_its_wedge_after_others_moved_it_and_is_stale_once_it_left() {
+        let mut lists = WedgeLists::<f64>::new(1, false);
+        let (mut stats, mut events) = (Stats::default(), Events::default());
+        let edge = (&1.0, [VertexId(0), VertexId(1)]);
+        let mut insert = |lists: &mut WedgeLists<f64>, w: Wedge<f64>, events: &mut Events| {
+            lists.insert((w, Provenance::default()), edge, &mut stats, events);
+        };
+        insert(&mut lists, wedge([0.4, 0.6], 0.5, 0.0), &mut events);
+        insert(&mut lists, wedge([0.6, 1.0], 0.8, 0.5), &mut events);
+        // Two wedges before the first one move it two places to the right.
+        insert(&mut lists, wedge([0.0, 0.2], 0.1, 0.0), &mut events);
+        insert(&mut lists, wedge([0.2, 0.4], 0.3, 0.0), &mut events);
+        // A wedge nearer than the second one everywhere takes its whole range.
+        insert(&mut lists, wedge([0.6, 1.0], 0.8, 0.0), &mut events);
+        let [first, second, ..] = events.0[..] else {
+            panic!("five queue events, got {}", events.0.len());
+        };
+        match lists.due(first, 1.0) {
+            Due::Now(w, _) => assert_eq!([w.b0, w.b1], [0.4, 0.6]),
+            _ => panic!("the first wedge is due"),
+        }
+        // Propagated once: its event is stale from then on, as is that of the wedge that left.
+        assert!(matches!(lists.due(first, 1.0), Due::Stale));
+        assert!(matches!(lists.due(second, 1.0), Due::Stale));
     }
 }
