@@ -343,7 +343,54 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 consider(self.best_through_edge(edge, face, &at, arrives));
             }
         }
-        best
+        best.or_else(|| self.arrival_near_vertex(v, &own))
+    }
+
+    /// A way to a vertex that no wedge covers: leave along an edge of the vertex to the nearest
+    /// range end of a wedge that would arrive there. In a float backend, a copy of a
+    /// pseudo-source unfolded around the vertex ties with the wedge running straight along the
+    /// edge from it, and a rounding its way took the end of that wedge's range at the vertex,
+    /// though its own ray does not enter the vertex's corner; the vertex's distance is the
+    /// same within that rounding.
+    fn arrival_near_vertex(
+        &self,
+        v: VertexId,
+        own: &impl Fn(&Wedge<S>) -> bool,
+    ) -> Option<Best<S>> {
+        let mut nearest: Option<(S, EdgeId, S)> = None;
+        for &edge in self.mesh().vertex_edges(v) {
+            let at_start = self.unfolding.ends(self.mesh(), edge)[0] == v;
+            let x = if at_start {
+                S::zero()
+            } else {
+                self.unfolding.length(edge).clone()
+            };
+            let at = Planar { x, y: S::zero() };
+            for w in self.wedges.on(edge) {
+                if own(w) || !self.ray_enters_corner(w, &at) {
+                    continue;
+                }
+                let end = if at_start { &w.b0 } else { &w.b1 };
+                let gap = if at_start {
+                    end.clone() - &at.x
+                } else {
+                    at.x.clone() - end
+                };
+                if nearest
+                    .as_ref()
+                    .is_none_or(|(g, _, _)| gap.compare(g) == Ordering::Less)
+                {
+                    nearest = Some((gap, edge, end.clone()));
+                }
+            }
+        }
+        let (_, edge, x) = nearest?;
+        let at = Planar { x, y: S::zero() };
+        let arrives = |w: &Wedge<S>| !own(w) && self.ray_enters_corner(w, &at);
+        self.mesh()
+            .edge_faces(edge)
+            .filter_map(|face| self.best_through_edge(edge, face, &at, arrives))
+            .min_by(|a, b| self.better_arrival(a, b))
     }
 
     /// For a wedge on an edge ending at the vertex `at`: whether the way from the vertex to the
