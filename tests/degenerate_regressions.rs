@@ -203,11 +203,7 @@ fn a_vertex_near_f64_max_leaves_the_others_reachable() {
 #[test]
 fn mixed_magnitude_slivers_agree_between_float_backends() {
     for name in ["mixed_magnitudes_5.obj", "mixed_magnitudes_12.obj"] {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("tests/data")
-            .join(name);
-        let mesh =
-            exact_geodesics::mesh::io::read_path(&path, &Default::default()).expect("test mesh");
+        let mesh = common::data_mesh(name);
         let bound = edge_graph_dijkstra(&mesh, 0);
         let (f, a) = (distances::<f64>(&mesh, 0), distances::<Adaptive>(&mesh, 0));
         for v in 0..mesh.vertex_count() {

@@ -139,11 +139,7 @@ fn random_terrains_with_saddles_are_certified_and_agree_with_f64() {
 #[test]
 fn hull_blobs_with_saddles_are_certified_and_agree_with_f64() {
     for name in ["hull_blob_60.obj", "hull_blob_100.obj"] {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("tests/data")
-            .join(name);
-        let mesh =
-            exact_geodesics::mesh::io::read_path(&path, &Default::default()).expect("test mesh");
+        let mesh = common::data_mesh(name);
         let stats =
             assert_certified_and_agrees_with_f64(&mesh, SurfacePoint::Vertex(VertexId(0)), name);
         assert!(stats.pseudo_source_emissions > 0, "{name}: no saddle");

@@ -332,18 +332,25 @@ impl<S: Scalar> GeodesicField<'_, S> {
             consider(self.best_through_edge(edge, face, &at, beyond));
         }
         for &edge in self.mesh().vertex_edges(v) {
-            let x = if self.unfolding.ends(self.mesh(), edge)[0] == v {
-                S::zero()
-            } else {
-                self.unfolding.length(edge).clone()
-            };
-            let at = Planar { x, y: S::zero() };
+            let (_, at) = self.end_of_edge(edge, v);
             let arrives = |w: &Wedge<S>| !own(w) && self.ray_enters_corner(w, &at);
             for face in self.mesh().edge_faces(edge) {
                 consider(self.best_through_edge(edge, face, &at, arrives));
             }
         }
         best.or_else(|| self.arrival_near_vertex(v, &own))
+    }
+
+    /// The vertex `v`, an end of `edge`, in the edge's frame, and whether it is the frame's
+    /// origin.
+    fn end_of_edge(&self, edge: EdgeId, v: VertexId) -> (bool, Planar<S>) {
+        let at_start = self.unfolding.ends(self.mesh(), edge)[0] == v;
+        let x = if at_start {
+            S::zero()
+        } else {
+            self.unfolding.length(edge).clone()
+        };
+        (at_start, Planar { x, y: S::zero() })
     }
 
     /// A way to a vertex that no wedge covers: leave along an edge of the vertex to the nearest
@@ -359,13 +366,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     ) -> Option<Best<S>> {
         let mut nearest: Option<(S, EdgeId, S)> = None;
         for &edge in self.mesh().vertex_edges(v) {
-            let at_start = self.unfolding.ends(self.mesh(), edge)[0] == v;
-            let x = if at_start {
-                S::zero()
-            } else {
-                self.unfolding.length(edge).clone()
-            };
-            let at = Planar { x, y: S::zero() };
+            let (at_start, at) = self.end_of_edge(edge, v);
             for w in self.wedges.on(edge) {
                 if own(w) || !self.ray_enters_corner(w, &at) {
                     continue;

@@ -247,6 +247,14 @@ pub fn random_face_point(mesh: &TriMesh, rng: &mut SplitMix64) -> SurfacePoint {
     }
 }
 
+/// A mesh of `tests/data`, by file name.
+pub fn data_mesh(name: &str) -> TriMesh {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data")
+        .join(name);
+    exact_geodesics::mesh::io::read_path(&path, &Default::default()).expect("test mesh")
+}
+
 /// Two unit right triangles apart: vertices 3 to 5 are unreachable from 0 to 2.
 pub fn two_triangles() -> TriMesh {
     TriMesh::new(
