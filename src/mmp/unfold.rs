@@ -174,6 +174,17 @@ fn frame_wing(mesh: &TriMesh, reversed: &[bool], e: EdgeId, side: Side) -> Optio
     })
 }
 
+/// The fractions `[0, 1]` of an edge's two ends along a hit parameter, `[1, 0]` where the
+/// parameter runs from the other end.
+fn end_fractions<S: Scalar>(reversed: bool) -> [S; 2] {
+    let (zero, one) = (S::zero(), S::from_f64(1.0));
+    if reversed {
+        [one, zero]
+    } else {
+        [zero, one]
+    }
+}
+
 /// A vertex's position in scaled coordinates, in the backend's number type.
 pub(crate) fn vertex_point<S: Scalar>(mesh: &TriMesh, v: VertexId) -> [S; 3] {
     let scale = S::from_f64(mesh.unit_scale());
@@ -534,24 +545,14 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
     /// first end and the apex.
     #[inline]
     pub(crate) fn near_ends(&self) -> [S; 2] {
-        let (zero, one) = (S::zero(), S::from_f64(1.0));
-        if self.near_from_apex {
-            [one, zero]
-        } else {
-            [zero, one]
-        }
+        end_fractions(self.near_from_apex)
     }
 
     /// The fractions of [`FaceLayout::far_hit`] at the far edge's two ends: the apex and the
     /// frame's second end.
     #[inline]
     pub(crate) fn far_ends(&self) -> [S; 2] {
-        let (zero, one) = (S::zero(), S::from_f64(1.0));
-        if self.far_from_end {
-            [one, zero]
-        } else {
-            [zero, one]
-        }
+        end_fractions(self.far_from_end)
     }
 
     /// Where the ray from `s` (above the edge's line) through the point `b` of the edge passes

@@ -65,8 +65,6 @@ pub(crate) struct Node {
     pub(crate) cache: Mutex<Option<Enclosure>>,
     /// The normal form, with the id of the tower it is written in (see `normal_form.rs`).
     pub(crate) normal_form: Mutex<Option<(u64, Option<NormalForm>)>>,
-    /// The normal form over atoms (see `normal_form.rs`), with the id of its tower.
-    pub(crate) atom_form: Mutex<Option<(u64, NormalForm)>>,
     /// A hash of the expression: equal for equal expressions, whichever nodes hold them.
     hash: u64,
     /// Whether the node is zero by its structure (`x - x` or `0 * x` of an expression `x`),
@@ -146,7 +144,6 @@ impl Node {
             op: Op::Leaf(r),
             cache: Mutex::new(None),
             normal_form: Mutex::new(None),
-            atom_form: Mutex::new(None),
         }
     }
 
@@ -185,7 +182,6 @@ impl Node {
             divisors_checked: OnceLock::new(),
             cache: Mutex::new(None),
             normal_form: Mutex::new(None),
-            atom_form: Mutex::new(None),
         }
     }
 

@@ -65,6 +65,9 @@ struct Tower {
     /// The atoms, by the address of the node each stands for (held, so that the address is
     /// not reused while the tower lives).
     atoms: HashMap<usize, (u32, Arc<Node>)>,
+    /// Normal forms over atoms, by the address of their node (held likewise): asked only of
+    /// would-be uncertified decisions, so kept here rather than on every node.
+    atom_forms: HashMap<usize, (Arc<Node>, NormalForm)>,
     /// The symbols of integer radicals, by square class ([`square_class`]): radicals whose
     /// product is a square are one symbol, up to a rational factor.
     integer_radicals: HashMap<u64, Vec<(Integer, u32)>>,
@@ -77,6 +80,7 @@ impl Tower {
             id: NEXT_TOWER.fetch_add(1, Ordering::Relaxed),
             squares: Vec::new(),
             atoms: HashMap::new(),
+            atom_forms: HashMap::new(),
             integer_radicals: HashMap::new(),
             radicals: HashMap::new(),
         }
@@ -416,18 +420,20 @@ pub(crate) fn zero_over_atoms(node: &Arc<Node>) -> bool {
 /// need only a few terms above the atoms, and a smaller atom keeps the work per test small.
 const ATOM_TERMS: usize = 64;
 
-/// The node's normal form over atoms, memoized on the node with the tower's id.
+/// The node's normal form over atoms, memoized in this thread's tower.
 fn over_atoms(node: &Arc<Node>) -> NormalForm {
-    let tower = tower_id();
-    if let Some((id, nf)) = node.atom_form.lock().expect("memo lock").as_ref() {
-        if *id == tower {
-            return nf.clone();
-        }
+    let key = Arc::as_ptr(node) as usize;
+    if let Some(nf) = TOWER.with(|t| t.borrow().atom_forms.get(&key).map(|(_, nf)| nf.clone())) {
+        return nf;
     }
     let nf = compute_with(node, |child| Some(over_atoms(child)))
         .filter(|nf| nf.0.len() <= ATOM_TERMS)
         .unwrap_or_else(|| atom(node));
-    *node.atom_form.lock().expect("memo lock") = Some((tower, nf.clone()));
+    TOWER.with(|t| {
+        t.borrow_mut()
+            .atom_forms
+            .insert(key, (node.clone(), nf.clone()))
+    });
     nf
 }
 
