@@ -37,6 +37,8 @@ pub(crate) struct FlatRegions<S> {
     face_region: Vec<Option<u32>>,
     /// The corners of each region's faces in the region's frame.
     corners: HashMap<(u32, VertexId), RegionPoint<S>>,
+    /// Whether each edge's frame runs from its `vertices[1]` (see `unfold.rs`).
+    reversed: Vec<bool>,
 }
 
 fn sub<S: Scalar>(p: &[S; 3], q: &[S; 3]) -> [S; 3] {
@@ -68,7 +70,7 @@ impl<S: Scalar> FlatRegions<S> {
     /// `S`). Two faces on a manifold edge join when the edge's four corners are coplanar and
     /// the faces' normals point the same way, both decided exactly on the input coordinates
     /// (polynomials in them, without square roots).
-    pub(crate) fn new(mesh: &TriMesh, points: &[[S; 3]]) -> Self {
+    pub(crate) fn new(mesh: &TriMesh, points: &[[S; 3]], reversed: Vec<bool>) -> Self {
         let normal = |f: FaceId| {
             let [a, b, c] = mesh.face(f).map(|v| &points[v.index()]);
             cross(&sub(b, a), &sub(c, a))
@@ -114,6 +116,7 @@ impl<S: Scalar> FlatRegions<S> {
         FlatRegions {
             face_region,
             corners,
+            reversed,
         }
     }
 
@@ -128,12 +131,17 @@ impl<S: Scalar> FlatRegions<S> {
     }
 
     /// The frame of edge `e` seen from its face `f` (in a region): the region points of its
-    /// ends, and `+1` or `-1` for the side of its line `f` lies on (`f` runs counterclockwise
-    /// in the region's frame, so it lies left of the edge when it runs from `vertices[0]` to
-    /// `vertices[1]`).
+    /// ends in the order of the edge's frame, and `+1` or `-1` for the side of its line `f`
+    /// lies on (`f` runs counterclockwise in the region's frame, so it lies left of the edge
+    /// when the edge runs the way of `f`'s corners).
     fn edge_in(&self, mesh: &TriMesh, e: EdgeId, f: FaceId) -> (&RegionPoint<S>, [S; 2], bool) {
         let region = self.face_region[f.index()].expect("a face of a region");
-        let [v0, v1] = mesh.edge(e).vertices;
+        let [v0, v1] = if self.reversed[e.index()] {
+            let [v0, v1] = mesh.edge(e).vertices;
+            [v1, v0]
+        } else {
+            mesh.edge(e).vertices
+        };
         let corners = mesh.face(f);
         let at = |v: VertexId| corners.iter().position(|&c| c == v).expect("a corner");
         let left = (at(v0) + 1) % 3 == at(v1);

@@ -43,6 +43,10 @@ pub(crate) struct Unfolding<S> {
     anchored: Vec<bool>,
     /// The flat regions, for number types that keep values (see `flat_region.rs`).
     flat: Option<FlatRegions<S>>,
+    /// Whether the points of every face's far edge are computed from its far end, as the
+    /// mirror image of the near edge's ([`FaceLayout::far_from_end`]): for number types that
+    /// keep values.
+    mirrored_far: bool,
     /// The mesh's unit scale.
     scale: f64,
 }
@@ -220,6 +224,40 @@ fn frames_near_sources(mesh: &TriMesh, sources: &[SurfacePoint]) -> (Vec<bool>, 
         .unzip()
 }
 
+/// For each edge, whether its frame starts at its `vertices[1]`: at the end whose position,
+/// seen from the centre of the mesh's bounding box, has the smaller absolute coordinates
+/// (sorted, compared in turn). A mirror symmetry of the mesh in a coordinate plane through
+/// that centre, or a swap of two axes, keeps these keys, so the frames of an edge and of its
+/// mirror image start at mirror-image ends, and the constructions of a wedge and of its mirror
+/// image are one expression (number types that keep values see their ties by structure). An
+/// edge whose ends have equal keys, one the other's mirror image, keeps its `vertices[0]`.
+fn symmetric_frames(mesh: &TriMesh) -> Vec<bool> {
+    let (lo, hi) = mesh
+        .positions()
+        .iter()
+        .fold((DVec3::INFINITY, DVec3::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(*p), hi.max(*p))
+        });
+    // Rounded alike for mirror-image positions: round to nearest is symmetric.
+    let centre = lo * 0.5 + hi * 0.5;
+    let key = |v: VertexId| {
+        let mut k = (mesh.position(v) - centre).abs().to_array();
+        k.sort_by(f64::total_cmp);
+        k
+    };
+    mesh.edges()
+        .iter()
+        .map(|e| {
+            let [k0, k1] = e.vertices.map(key);
+            k1.iter()
+                .zip(&k0)
+                .map(|(a, b)| a.total_cmp(b))
+                .find(|o| o.is_ne())
+                == Some(Ordering::Less)
+        })
+        .collect()
+}
+
 impl<S: Scalar> Unfolding<S> {
     /// The unfolding of `mesh` for a propagation from `sources`.
     pub(crate) fn new(mesh: &TriMesh, sources: &[SurfacePoint]) -> Self {
@@ -227,7 +265,7 @@ impl<S: Scalar> Unfolding<S> {
         let (reversed, anchored) = if S::frames_from_nearer_end() {
             frames_near_sources(mesh, sources)
         } else {
-            (vec![false; edge_count], vec![false; edge_count])
+            (symmetric_frames(mesh), vec![false; edge_count])
         };
         let mut edge_length = Vec::with_capacity(edge_count);
         let mut zero_length = Vec::with_capacity(edge_count);
@@ -237,7 +275,7 @@ impl<S: Scalar> Unfolding<S> {
             let points: Vec<[S; 3]> = (0..mesh.vertex_count())
                 .map(|v| vertex_point(mesh, VertexId(v as u32)))
                 .collect();
-            FlatRegions::new(mesh, &points)
+            FlatRegions::new(mesh, &points, reversed.clone())
         }));
         for i in 0..edge_count {
             let e = EdgeId(i as u32);
@@ -278,6 +316,7 @@ impl<S: Scalar> Unfolding<S> {
             apex,
             reversed,
             anchored,
+            mirrored_far: flat.is_some(),
             flat,
             scale: mesh.unit_scale(),
         }
@@ -470,7 +509,9 @@ pub(crate) struct FaceLayout<'a, S> {
     /// small difference of two lengths of the near edge.
     pub near_from_apex: bool,
     /// Likewise, whether points of the far edge are computed from the edge's second end rather
-    /// than from the apex.
+    /// than from the apex: also for number types that keep values, whatever the far edge's
+    /// frame, so that the far edge's points are the mirror image of the near edge's (measured
+    /// from the edge's first end) and the mirror images of a wedge build one expression.
     pub far_from_end: bool,
 }
 
@@ -497,7 +538,8 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
             near_reversed,
             far_reversed,
             near_from_apex: near_reversed && unfolding.anchored[wing.near.index()],
-            far_from_end: far_reversed && unfolding.anchored[wing.far.index()],
+            far_from_end: (far_reversed && unfolding.anchored[wing.far.index()])
+                || unfolding.mirrored_far,
             wing,
         })
     }
@@ -623,9 +665,11 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
             // C - E = (-far_x, -h): along the edge (s - E) . (C - E) / b, across it
             // (E - C) x (s - E) / b.
             let back = self.length.clone() - &s.x;
-            let x = back.clone() * &ux - s.y.clone() * self.apex_h;
-            let y = ux * &s.y + back * self.apex_h;
-            return Planar { x: x / b, y: y / b };
+            let x = (back.clone() * &ux - s.y.clone() * self.apex_h) / b;
+            let y = (ux * &s.y + back * self.apex_h) / b;
+            // The far edge's frame may start at the apex (number types that keep values).
+            let x = if self.far_reversed { x } else { b.clone() - x };
+            return Planar { x, y };
         }
         let sx = s.x.clone() - self.apex_x;
         let sy = s.y.clone() + self.apex_h;
@@ -658,7 +702,7 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
     #[inline]
     pub(crate) fn far_position(&self, u: &S) -> S {
         let x = u.clone() * self.far_length;
-        if self.far_reversed && !self.far_from_end {
+        if self.far_reversed != self.far_from_end {
             self.far_length.clone() - x
         } else {
             x

@@ -148,6 +148,9 @@ impl Real {
         if let Some(settled) = self.settled_without_refinement() {
             return settled;
         }
+        if let Some(settled) = self.sign_of_factors() {
+            return settled;
+        }
         let (lo, hi) = refine::enclosure(node, FIRST_PRECISION);
         if lo.cmp0() == Some(Ordering::Greater) {
             return (Sign::Positive, Certificate::Refinement);
@@ -289,6 +292,34 @@ impl Real {
             ),
             Ordering::Greater => (Sign::Positive, Certificate::Refinement),
         })
+    }
+
+    /// The sign of a negation, product or quotient from its operands' certified signs (the
+    /// divisors are known non-zero here): a zero of the numerator alone may be proved where
+    /// that of the whole quotient, which also carries the denominator, is beyond the proofs.
+    /// `None` where an operand's sign is not certified, or the value is no such operation.
+    fn sign_of_factors(&self) -> Option<(Sign, Certificate)> {
+        let sign = |n: &Arc<Node>| match Real(n.clone()).certified_sign() {
+            (_, Certificate::Uncertified(_)) => None,
+            settled => Some(settled),
+        };
+        match &self.0.op {
+            Op::Neg(a) => sign(a).map(|(s, c)| (s.times(Sign::Negative), c)),
+            Op::Mul(a, b) | Op::Div(a, b) => {
+                let (sa, ca) = sign(a)?;
+                if sa == Sign::Zero {
+                    return Some((sa, ca));
+                }
+                let (sb, cb) = sign(b)?;
+                let certificate = if sb == Sign::Zero {
+                    cb
+                } else {
+                    Certificate::Refinement
+                };
+                Some((sa.times(sb), certificate))
+            }
+            _ => None,
+        }
     }
 
     /// The sign and its certificate where it is clear without a search for a proof of zero:
@@ -663,14 +694,18 @@ mod tests {
             (a.clone() - b.clone()).certified_sign(),
             (Sign::Zero, Certificate::CertifiedZero(ZeroProof::Structure))
         );
-        // A different expression of the same value is no copy: another proof settles it.
-        let other = int(3).sqrt() * &int(2).sqrt() + &(int(1) / int(3));
+        // The same expression with its operands in the other order is a copy.
+        let swapped = int(1) / int(3) + &(int(3).sqrt() * &int(2).sqrt());
         assert_eq!(
-            (a - other).certified_sign(),
-            (
-                Sign::Zero,
-                Certificate::CertifiedZero(ZeroProof::NormalForm)
-            )
+            (a.clone() - swapped).certified_sign(),
+            (Sign::Zero, Certificate::CertifiedZero(ZeroProof::Structure))
+        );
+        // A different expression of the same value is no copy: another proof settles it.
+        let other = int(6).sqrt() + &(int(1) / int(3));
+        let proof = (a - other).certified_sign();
+        assert!(
+            matches!(proof, (Sign::Zero, Certificate::CertifiedZero(p)) if p != ZeroProof::Structure),
+            "{proof:?}"
         );
         // Nor is an expression that differs in one leaf, however close.
         let near = int(2).sqrt() * &int(3).sqrt() + &(Real::from_f64(1.0 / 3.0));

@@ -8,11 +8,15 @@
 //!   divisors are decided before any sign of the node is, see [`Node::divisors_unchecked`]);
 //! - a hash of its expression, so that `a - b` of two copies of one expression (the engine
 //!   builds the same construction from the same inputs more than once) is known to be zero by
-//!   structure ([`same_expression`]).
+//!   structure ([`same_expression`]). Sums and products hash alike in either order.
 //!
 //! Operations on two rational leaves fold into a rational leaf (while it stays small), and the
 //! square root of a perfect-square rational is rational, so meshes with rational lengths build
-//! no DAG at all.
+//! no DAG at all. A few identities are applied as nodes are built, where an operand is a copy
+//! of another's: `a - (a - b) = b`, `(a + b) - b = a`, `(a - b) - (a - c) = c - b` and
+//! `-(-a) = a`. They are what a position measured from the other end of an edge, `L - x`,
+//! turns into when it is measured back: on a mesh with a mirror symmetry, the mirror images of
+//! a wedge then build one and the same expression, and their ties are zeros by structure.
 
 use super::super::bignum::{Float, Rational};
 use super::super::{Interval, Sign};
@@ -252,12 +256,32 @@ impl Node {
         if b.is_zero() {
             return a;
         }
+        if let Some(n) = Node::cancel(&a, &b) {
+            return n;
+        }
         let (log_u, log_l) = (
             log_add(a.log_u + b.log_l, a.log_l + b.log_u),
             a.log_l + b.log_l,
         );
         let (filter, has_sqrt) = (a.filter - b.filter, a.has_sqrt || b.has_sqrt);
         Node::build(Op::Sub(a, b), filter, log_u, log_l, has_sqrt)
+    }
+
+    /// `a - b` where a copy of an operand cancels: `a - (a - c) = c`, `(c + b) - b = c`,
+    /// `(b + c) - b = c`, `(p - c) - (p - d) = d - c`. Only where the cancelled copy's
+    /// divisors are known non-zero: the result would have a value where `a - b` has none.
+    fn cancel(a: &Arc<Node>, b: &Arc<Node>) -> Option<Arc<Node>> {
+        let gone = |x: &Arc<Node>, y: &Arc<Node>| {
+            (!x.divisors_unchecked || x.divisors_checked.get() == Some(&DivisorCheck::NonZero))
+                && same_expression(x, y)
+        };
+        match (&a.op, &b.op) {
+            (_, Op::Sub(p, c)) if gone(a, p) => Some(c.clone()),
+            (Op::Add(c, q), _) if gone(q, b) => Some(c.clone()),
+            (Op::Add(q, c), _) if gone(q, b) => Some(c.clone()),
+            (Op::Sub(p, c), Op::Sub(q, d)) if gone(p, q) => Some(Node::sub(d.clone(), c.clone())),
+            _ => None,
+        }
     }
 
     pub(crate) fn mul(a: Arc<Node>, b: Arc<Node>) -> Arc<Node> {
@@ -297,6 +321,9 @@ impl Node {
         if let Some(r) = a.rational() {
             return Node::leaf(-r.clone());
         }
+        if let Op::Neg(p) = &a.op {
+            return p.clone();
+        }
         let (log_u, log_l, filter, has_sqrt) = (a.log_u, a.log_l, -a.filter, a.has_sqrt);
         Node::build(Op::Neg(a), filter, log_u, log_l, has_sqrt)
     }
@@ -325,7 +352,8 @@ impl Node {
     }
 }
 
-/// The hash of an operation's expression, from its kind and its operands' hashes.
+/// The hash of an operation's expression, from its kind and its operands' hashes, in either
+/// order for a sum or a product.
 fn op_hash(op: &Op) -> u64 {
     let tag: u64 = match op {
         Op::Leaf(_) => 1,
@@ -337,9 +365,11 @@ fn op_hash(op: &Op) -> u64 {
         Op::Sqrt(_) => 7,
         Op::Dropped => 8,
     };
-    op_children(op).fold(tag, |h, c| {
-        (h.rotate_left(23) ^ c.hash).wrapping_mul(0x9E37_79B9_7F4A_7C15)
-    })
+    let mix = |h: u64, c: u64| (h.rotate_left(23) ^ c).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    match op {
+        Op::Add(a, b) | Op::Mul(a, b) => mix(mix(tag, a.hash.min(b.hash)), a.hash.max(b.hash)),
+        _ => op_children(op).fold(tag, |h, c| mix(h, c.hash)),
+    }
 }
 
 /// Node pairs [`same_expression`] may compare before it gives up (and answers `false`): two
@@ -347,8 +377,9 @@ fn op_hash(op: &Op) -> u64 {
 const SAME_EXPRESSION_BUDGET: usize = 4096;
 
 /// Whether two nodes hold the same expression: the same node, or the same operation on
-/// operands that hold the same expressions, down to equal rational leaves. `false` may also
-/// mean "too large to tell"; `true` is a proof that the values are equal.
+/// operands that hold the same expressions (a sum's or a product's in either order), down to
+/// equal rational leaves. `false` may also mean "too large to tell"; `true` is a proof that
+/// the values are equal.
 pub(crate) fn same_expression(a: &Arc<Node>, b: &Arc<Node>) -> bool {
     if Arc::ptr_eq(a, b) {
         return true;
@@ -378,7 +409,15 @@ pub(crate) fn same_expression(a: &Arc<Node>, b: &Arc<Node>) -> bool {
         if !same_kind {
             return false;
         }
-        stack.extend(x.children().zip(y.children()));
+        match (&x.op, &y.op) {
+            // Operands in the other order: paired by their hashes.
+            (Op::Add(x0, x1), Op::Add(y0, y1)) | (Op::Mul(x0, x1), Op::Mul(y0, y1))
+                if x0.hash != y0.hash =>
+            {
+                stack.extend([(x0, y1), (x1, y0)]);
+            }
+            _ => stack.extend(x.children().zip(y.children())),
+        }
     }
     true
 }

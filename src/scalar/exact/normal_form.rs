@@ -16,7 +16,9 @@
 //! A last resort ([`zero_over_atoms`]) writes every subexpression too large to expand as an
 //! *atom*, an indeterminate: the identities MMP creates are mostly local (a pseudo-source's
 //! tangency with the image that lit it, across the faces between them), and they hold whatever
-//! value the deep unfoldings below give the image.
+//! value the deep unfoldings below give the image. Subexpressions whose forms over atoms are
+//! proportional share one atom, so that `(p - x)^2` and `(x - p)^2` built on two sides of a
+//! mirror are one atom squared.
 
 use super::super::bignum::{Integer, Rational};
 use super::node::{Node, Op};
@@ -68,6 +70,8 @@ struct Tower {
     /// Normal forms over atoms, by the address of their node (held likewise): asked only of
     /// would-be uncertified decisions, so kept here rather than on every node.
     atom_forms: HashMap<usize, (Arc<Node>, NormalForm)>,
+    /// Atoms standing for values known by their forms over atoms, by [`AtomKey`].
+    keyed_atoms: HashMap<AtomKey, u32>,
     /// The symbols of integer radicals, by square class ([`square_class`]): radicals whose
     /// product is a square are one symbol, up to a rational factor.
     integer_radicals: HashMap<u64, Vec<(Integer, u32)>>,
@@ -81,6 +85,7 @@ impl Tower {
             squares: Vec::new(),
             atoms: HashMap::new(),
             atom_forms: HashMap::new(),
+            keyed_atoms: HashMap::new(),
             integer_radicals: HashMap::new(),
             radicals: HashMap::new(),
         }
@@ -125,6 +130,29 @@ impl NormalForm {
 
     pub(crate) fn is_zero(&self) -> bool {
         self.0.is_empty()
+    }
+
+    /// The first coefficient, and the form divided by it (`1` and zero for zero).
+    fn normalized(&self) -> (Rational, NormalForm) {
+        match self.0.values().next() {
+            Some(lead) => (
+                lead.clone(),
+                NormalForm(
+                    self.0
+                        .iter()
+                        .map(|(m, c)| (m.clone(), c.clone() / lead))
+                        .collect(),
+                ),
+            ),
+            None => (Rational::from(1), NormalForm::default()),
+        }
+    }
+
+    fn scaled(self, c: &Rational) -> NormalForm {
+        if c.is_zero() {
+            return NormalForm::default();
+        }
+        NormalForm(self.0.into_iter().map(|(m, x)| (m, x * c)).collect())
     }
 
     /// The value, if it is rational.
@@ -426,15 +454,71 @@ fn over_atoms(node: &Arc<Node>) -> NormalForm {
     if let Some(nf) = TOWER.with(|t| t.borrow().atom_forms.get(&key).map(|(_, nf)| nf.clone())) {
         return nf;
     }
-    let nf = compute_with(node, |child| Some(over_atoms(child)))
-        .filter(|nf| nf.0.len() <= ATOM_TERMS)
-        .unwrap_or_else(|| atom(node));
+    let pair =
+        |a: &Arc<Node>, b: &Arc<Node>| [over_atoms(a), over_atoms(b)].map(|f| f.normalized());
+    let nf = match compute_with(node, |child| Some(over_atoms(child))) {
+        Some(nf) if nf.0.len() <= ATOM_TERMS => nf,
+        Some(nf) => {
+            let (lead, form) = nf.normalized();
+            keyed_atom(AtomKey::Form(form)).scaled(&lead)
+        }
+        None => match &node.op {
+            Op::Mul(a, b) => {
+                let [(la, fa), (lb, fb)] = pair(a, b);
+                let factors = if form_hash(&fa) <= form_hash(&fb) {
+                    [fa, fb]
+                } else {
+                    [fb, fa]
+                };
+                keyed_atom(AtomKey::Product(factors)).scaled(&(la * &lb))
+            }
+            Op::Div(a, b) => {
+                let [(la, fa), (lb, fb)] = pair(a, b);
+                keyed_atom(AtomKey::Quotient([fa, fb])).scaled(&(la / &lb))
+            }
+            _ => atom(node),
+        },
+    };
     TOWER.with(|t| {
         t.borrow_mut()
             .atom_forms
             .insert(key, (node.clone(), nf.clone()))
     });
     nf
+}
+
+/// What an atom stands for when it is known by forms over atoms: a value of that form, or the
+/// product or quotient of two values of those forms, each form divided by its first
+/// coefficient (the atom is then multiplied by it). Values with one key are equal, a zero
+/// normal form being a proof, so they are one atom whichever nodes hold them.
+#[derive(Clone, PartialEq, Eq, Hash)]
+enum AtomKey {
+    Form(NormalForm),
+    Product([NormalForm; 2]),
+    Quotient([NormalForm; 2]),
+}
+
+/// The atom of a key.
+fn keyed_atom(key: AtomKey) -> NormalForm {
+    let id = TOWER.with(|t| {
+        let mut t = t.borrow_mut();
+        if let Some(id) = t.keyed_atoms.get(&key) {
+            return *id;
+        }
+        let id = t.squares.len() as u32;
+        t.squares.push(None);
+        t.keyed_atoms.insert(key, id);
+        id
+    });
+    NormalForm::monomial(Rational::from(1), vec![id])
+}
+
+/// A hash of a form: the order of a product's factors in its key.
+fn form_hash(f: &NormalForm) -> u64 {
+    use std::hash::{Hash, Hasher};
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    f.hash(&mut h);
+    h.finish()
 }
 
 /// The atom standing for the node's value.
