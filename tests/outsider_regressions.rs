@@ -57,3 +57,67 @@ fn a_sliver_folded_onto_a_coplanar_face_is_unfolded_not_joined_to_it() {
         assert_eq!(d[2], f64::INFINITY, "{backend}: v2 is used by no face");
     }
 }
+
+fn straight(mesh: &TriMesh, a: u32, b: u32) -> f64 {
+    let (p, q) = (mesh.position(VertexId(a)), mesh.position(VertexId(b)));
+    let d = [0, 1, 2].map(|i| q[i] - p[i]);
+    let m = d.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    if m == 0.0 {
+        return 0.0;
+    }
+    m * d.iter().map(|c| (c / m) * (c / m)).sum::<f64>().sqrt()
+}
+
+/// A bumpy grid (units of 1e20) in which `v5` was moved onto the edge `(v6, v9)`, at a quarter
+/// of it: the face `(v5, v6, v9)` is degenerate, and the geodesics to `v10` run through `v5`
+/// into the face `(v6, v10, v9)` beyond that edge. Rounded at this scale, `v5`'s height over
+/// the edge was a few ulps rather than zero, so the float backends never counted `v5` as a
+/// point of the edge, dropped its window there (as narrow as that height), and reached `v10`
+/// only around `v6`: 4.794e20 against 4.718e20 (1.6 % long). Checked against the straight
+/// segment from `v5` to `v10` (which lies in the face beyond) and against the exact backend.
+#[test]
+fn a_vertex_moved_onto_an_edge_lights_the_face_beyond_it_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.0, 0.0, -8.400000000000001e+18],
+            [1e+20, 0.0, -2.9e+18],
+            [2e+20, 0.0, 1.55e+19],
+            [0.0, 1e+20, 2.2199999999999996e+19],
+            [1e+20, 1e+20, 1.87e+19],
+            [3.0000000000000007e+20, 1.25e+20, 2.8250000000000004e+19],
+            [3.0000000000000007e+20, 1e+20, 3.13e+19],
+            [1e+20, 2e+20, 4.3e+19],
+            [2e+20, 2e+20, -2.34e+19],
+            [3.0000000000000007e+20, 2e+20, 1.9100000000000004e+19],
+            [4e+20, 2e+20, -4.43e+19],
+        ],
+        vec![
+            [0, 1, 3],
+            [1, 4, 3],
+            [1, 2, 5],
+            [1, 5, 4],
+            [2, 6, 5],
+            [4, 5, 7],
+            [5, 8, 7],
+            [5, 6, 9],
+            [5, 9, 8],
+            [6, 10, 9],
+        ],
+    )
+    .expect("usable mesh");
+    let through_v5 = straight(&mesh, 5, 10);
+    let exact = distances::<Real>(&mesh, 0)[10];
+    for (backend, d) in every_backend(&mesh, 0) {
+        assert!(
+            d[10] <= (d[5] + through_v5) * (1.0 + 1e-12),
+            "{backend}: d(v10) = {} beyond d(v5) + |v5 v10| = {}",
+            d[10],
+            d[5] + through_v5
+        );
+        assert!(
+            (d[10] - exact).abs() <= 1e-12 * exact,
+            "{backend}: d(v10) = {}, exact {exact}",
+            d[10]
+        );
+    }
+}
