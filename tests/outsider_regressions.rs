@@ -121,3 +121,135 @@ fn a_vertex_moved_onto_an_edge_lights_the_face_beyond_it_in_every_backend() {
         );
     }
 }
+
+/// The traced path from `target` back to `source` in backend `S`: its length and distance.
+fn traced<S: Scalar>(mesh: &TriMesh, source: u32, target: u32) -> (f64, f64) {
+    let field = propagate::<S>(
+        mesh,
+        &[SurfacePoint::Vertex(VertexId(source))],
+        &PropagateOptions::default(),
+    )
+    .expect("valid source");
+    let path = field
+        .trace_back(&SurfacePoint::Vertex(VertexId(target)))
+        .expect("the target is reached, so a path leads back");
+    (path.length(), path.distance)
+}
+
+fn every_backend_traced(
+    mesh: &TriMesh,
+    source: u32,
+    target: u32,
+) -> [(&'static str, (f64, f64)); 3] {
+    [
+        ("f64", traced::<f64>(mesh, source, target)),
+        ("adaptive", traced::<Adaptive>(mesh, source, target)),
+        ("exact", traced::<Real>(mesh, source, target)),
+    ]
+}
+
+/// A flat strip (a grid rotated by (0.6, 0.8) in floats) whose source `v0` was moved onto
+/// the edge `(v1, v3)` at a quarter of it: the face `(v0, v1, v3)` is degenerate, and `v0`
+/// lights the face beyond that edge as a point of it. The back-trace from `v5` walked into
+/// that face and, finding the source neither a corner nor (at its height of a few ulps) a
+/// point of the edge, lost its way in the exact backend. The path bends at the boundary
+/// corner `v3`: 0.75 + 1 = 1.75.
+#[test]
+fn a_source_in_the_middle_of_a_degenerate_face_is_traced_to_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.39999999999999997, 0.9500000000000001, 0.0],
+            [0.6, 0.8, 0.0],
+            [1.2, 1.6, 0.0],
+            [-0.20000000000000007, 1.4, 0.0],
+            [0.3999999999999999, 2.2, 0.0],
+            [-1.0, 2.0, 0.0],
+            [-0.40000000000000013, 2.8, 0.0],
+        ],
+        vec![[0, 1, 3], [1, 2, 3], [2, 4, 3], [3, 4, 6], [3, 6, 5]],
+    )
+    .expect("usable mesh");
+    let want = straight(&mesh, 0, 3) + straight(&mesh, 3, 5);
+    for (backend, (length, distance)) in every_backend_traced(&mesh, 0, 5) {
+        assert!(
+            (distance - want).abs() <= 1e-12 * want,
+            "{backend}: distance {distance}, want {want}"
+        );
+        assert!(
+            (length - want).abs() <= 1e-12 * want,
+            "{backend}: length {length}, want {want}"
+        );
+    }
+}
+
+/// A pyramid (rotated) with its apex `v0` moved to the middle of the base edge `(v2, v3)`, a
+/// duplicated face and one corner unwelded. The geodesic to `v3` runs along the edge
+/// `(v0, v3)`; the adaptive back-trace arrived at `v3` by the wedge that `v0` sends beyond
+/// `(v2, v3)` as a point of it, did not find `v0` on that edge (a height of a few ulps), and
+/// went on to the far end `v2` and back: a path of 1.30 for a distance of 0.434.
+#[test]
+fn a_path_to_the_middle_corner_of_a_degenerate_face_has_the_distance_s_length() {
+    let mesh = TriMesh::new(
+        vec![
+            [
+                -0.5195620680722947,
+                -0.21926836748828082,
+                -0.7026532155827874,
+            ],
+            [0.47069323441506106, 0.4332837873751152, -0.7685785832780954],
+            [
+                -0.2529755502849691,
+                -0.0023377816125949025,
+                -0.967469847455283,
+            ],
+            [-0.78614858585962, -0.43619895336396675, -0.4378365837102918],
+            [
+                -0.7273357017733071,
+                -0.5415934163951783,
+                0.42149655780721373,
+            ],
+            [
+                -0.12082419930722416,
+                -0.2391569903884818,
+                0.9634341943330076,
+            ],
+            [0.5766703896017044, 0.24336952729428715, 0.7798862320500174],
+            [0.8399204132083549, 0.5426338270908193, 0.009068030253431614],
+            [0.0, 0.0, 0.0],
+            [
+                -0.7273357017733071,
+                -0.5415934163951783,
+                0.42149655780721373,
+            ],
+        ],
+        vec![
+            [0, 1, 2],
+            [0, 2, 3],
+            [0, 3, 4],
+            [0, 9, 5],
+            [0, 5, 6],
+            [0, 6, 7],
+            [0, 7, 1],
+            [8, 2, 1],
+            [8, 3, 2],
+            [8, 4, 3],
+            [8, 3, 2],
+            [8, 5, 4],
+            [8, 6, 5],
+            [8, 7, 6],
+            [8, 1, 7],
+        ],
+    )
+    .expect("usable mesh");
+    let want = straight(&mesh, 0, 3);
+    for (backend, (length, distance)) in every_backend_traced(&mesh, 0, 3) {
+        assert!(
+            (distance - want).abs() <= 1e-12 * want,
+            "{backend}: distance {distance}, want {want}"
+        );
+        assert!(
+            (length - want).abs() <= 1e-9 * want,
+            "{backend}: length {length}, want {want}"
+        );
+    }
+}
