@@ -57,6 +57,15 @@ fn cross<S: Scalar>(a: &[S; 3], b: &[S; 3]) -> [S; 3] {
     ]
 }
 
+/// Whether face `f`, read in its corners' order, runs along its edge `e` from the edge's first
+/// vertex to its second.
+fn runs_from_first_end(mesh: &TriMesh, e: EdgeId, f: FaceId) -> bool {
+    let [v0, v1] = mesh.edge(e).vertices;
+    let corners = mesh.face(f);
+    let at = |v: VertexId| corners.iter().position(|&c| c == v).expect("a corner");
+    (at(v0) + 1) % 3 == at(v1)
+}
+
 fn find(parent: &mut [usize], mut i: usize) -> usize {
     while parent[i] != i {
         parent[i] = parent[parent[i]];
@@ -79,6 +88,15 @@ impl<S: Scalar> FlatRegions<S> {
         for e in 0..mesh.edge_count() {
             let faces: Vec<FaceId> = mesh.edge_faces(EdgeId(e as u32)).collect();
             let &[f, g] = faces.as_slice() else { continue };
+            // Normals pointing the same way put the faces on opposite sides of the edge only
+            // when they run along it in opposite directions; running the same way (an edge
+            // of inconsistent orientation), they lie folded onto each other, and the plane's
+            // frame is no unfolding of the pair.
+            if runs_from_first_end(mesh, EdgeId(e as u32), f)
+                == runs_from_first_end(mesh, EdgeId(e as u32), g)
+            {
+                continue;
+            }
             let (nf, ng) = (normal(f), normal(g));
             let parallel = cross(&nf, &ng).iter().all(|c| c.sign() == Sign::Zero);
             if parallel && dot(&nf, &ng).sign() == Sign::Positive {
@@ -136,15 +154,14 @@ impl<S: Scalar> FlatRegions<S> {
     /// when the edge runs the way of `f`'s corners).
     fn edge_in(&self, mesh: &TriMesh, e: EdgeId, f: FaceId) -> (&RegionPoint<S>, [S; 2], bool) {
         let region = self.face_region[f.index()].expect("a face of a region");
-        let [v0, v1] = if self.reversed[e.index()] {
-            let [v0, v1] = mesh.edge(e).vertices;
-            [v1, v0]
+        let [first, second] = mesh.edge(e).vertices;
+        let reversed = self.reversed[e.index()];
+        let [v0, v1] = if reversed {
+            [second, first]
         } else {
-            mesh.edge(e).vertices
+            [first, second]
         };
-        let corners = mesh.face(f);
-        let at = |v: VertexId| corners.iter().position(|&c| c == v).expect("a corner");
-        let left = (at(v0) + 1) % 3 == at(v1);
+        let left = runs_from_first_end(mesh, e, f) != reversed;
         let (p0, p1) = (self.corner(region, v0), self.corner(region, v1));
         (p0, [p1[0].clone() - &p0[0], p1[1].clone() - &p0[1]], left)
     }

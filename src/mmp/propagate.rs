@@ -479,8 +479,12 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let Some(at) = self.unfolding.apex_point(mesh, g, side) else {
                 continue;
             };
-            // Only a degenerate face has a corner on its opposite edge's line.
-            if mesh.is_degenerate_face(f) && self.unfolding.is_inside(g, &at) {
+            // Only a degenerate face has a corner on its opposite edge's line. Its height
+            // over the line is rounding or a few ulps of the input: the corner is a point of
+            // the edge wherever its foot falls inside the edge (a window as narrow as that
+            // height would be lost to the float backends' resolution, and with it every
+            // geodesic through the corner into the faces beyond).
+            if mesh.is_degenerate_face(f) && self.unfolding.is_over(g, &at) {
                 beyond.extend(mesh.edge_faces(g).filter(|&h| h != f));
             }
             let ends = self.unfolding.ends(mesh, g).map(to);

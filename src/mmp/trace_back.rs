@@ -687,7 +687,18 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 let Some(on) = self.unfolding.planar(self.mesh(), g, &p) else {
                     continue;
                 };
-                if !self.unfolding.is_inside(g, &on) {
+                // As in propagation: a corner of a degenerate face is a point of the face's
+                // edge opposite it wherever its foot falls inside that edge.
+                let middle_corner = |v: VertexId| {
+                    self.mesh().edge_faces(g).any(|h| {
+                        self.mesh().is_degenerate_face(h) && self.mesh().face(h).contains(&v)
+                    })
+                };
+                let inside = match point {
+                    SurfacePoint::Vertex(v) if middle_corner(v) => self.unfolding.is_over(g, &on),
+                    _ => self.unfolding.is_inside(g, &on),
+                };
+                if !inside {
                     continue;
                 }
                 let here = (self.unfolding.edge_point(g, &on.x), Some(on.x.clone()));

@@ -425,9 +425,13 @@ impl<S: Scalar> Unfolding<S> {
 
     /// Whether a point (in the frame of edge `e`) lies on the edge strictly between its ends.
     pub(crate) fn is_inside(&self, e: EdgeId, at: &Planar<S>) -> bool {
-        at.y.sign() == Sign::Zero
-            && at.x.sign() == Sign::Positive
-            && at.x.compare(self.length(e)) == Ordering::Less
+        at.y.sign() == Sign::Zero && self.is_over(e, at)
+    }
+
+    /// Whether a point (in the frame of edge `e`) lies strictly between the ends of the edge
+    /// along it, at whatever height: the foot of its perpendicular is inside the edge.
+    pub(crate) fn is_over(&self, e: EdgeId, at: &Planar<S>) -> bool {
+        at.x.sign() == Sign::Positive && at.x.compare(self.length(e)) == Ordering::Less
     }
 
     /// A surface point's position in space, in scaled coordinates.

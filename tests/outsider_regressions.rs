@@ -1,0 +1,255 @@
+//! Degenerate meshes made outside the project's own generator (an independent corpus of
+//! welded and unwelded coincident vertices, zero-area faces, inconsistent orientations,
+//! rotations and scalings) on which a backend once broke an invariant of issue 10. Expected
+//! values come from the coordinates (closed forms of the unfolded surface), never from the
+//! engine.
+
+use exact_geodesics::scalar::{Adaptive, Real};
+use exact_geodesics::{propagate, PropagateOptions, Scalar, SurfacePoint, TriMesh, VertexId};
+
+fn distances<S: Scalar>(mesh: &TriMesh, source: u32) -> Vec<f64> {
+    propagate::<S>(
+        mesh,
+        &[SurfacePoint::Vertex(VertexId(source))],
+        &PropagateOptions::default(),
+    )
+    .expect("valid source")
+    .vertex_distances()
+}
+
+/// The distances from `source` in all three backends, labelled.
+fn every_backend(mesh: &TriMesh, source: u32) -> [(&'static str, Vec<f64>); 3] {
+    [
+        ("f64", distances::<f64>(mesh, source)),
+        ("adaptive", distances::<Adaptive>(mesh, source)),
+        ("exact", distances::<Real>(mesh, source)),
+    ]
+}
+
+/// A sliver folded back onto its flat neighbour. Apex `v0` at height 1 over the line through
+/// `v4`, `v5` (the origin) and `v1`, along `(0.8, -0.6)` rotated in floats (so the sliver
+/// `(v4, v1, v5)` has an area of a few ulps); the face `(v5, v4, v3)` lies in the same plane,
+/// and its edge with the sliver is traversed the same way by both (inconsistent orientation),
+/// so their normals agree although they lie on the same side of that edge. Unfolded, the apex
+/// lands at `(0.6, 0.8)`, opposite `v3 = (-0.6, -0.8)`, and the geodesic runs straight through
+/// `v5`: d(v3) = 1 + 1 = 2. The exact backend joined the two faces into one flat region and
+/// carried the apex's image unreflected onto `v3` itself: d(v3) = 1.1e-16.
+#[test]
+fn a_sliver_folded_onto_a_coplanar_face_is_unfolded_not_joined_to_it() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.0, 0.0, 1.0],
+            [-0.8, 0.6, 0.0],
+            [-0.8, 0.6, 0.0],
+            [-0.6000000000000001, -0.7999999999999999, 0.0],
+            [0.7999999999999999, -0.6000000000000001, 0.0],
+            [0.0, 0.0, 0.0],
+        ],
+        vec![[0, 4, 1], [5, 4, 3], [4, 1, 5]],
+    )
+    .expect("usable mesh");
+    for (backend, d) in every_backend(&mesh, 0) {
+        assert!(
+            (d[3] - 2.0).abs() <= 1e-12,
+            "{backend}: d(v3) = {}, want 2",
+            d[3]
+        );
+        assert_eq!(d[2], f64::INFINITY, "{backend}: v2 is used by no face");
+    }
+}
+
+fn straight(mesh: &TriMesh, a: u32, b: u32) -> f64 {
+    let (p, q) = (mesh.position(VertexId(a)), mesh.position(VertexId(b)));
+    let d = [0, 1, 2].map(|i| q[i] - p[i]);
+    let m = d.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    if m == 0.0 {
+        return 0.0;
+    }
+    m * d.iter().map(|c| (c / m) * (c / m)).sum::<f64>().sqrt()
+}
+
+/// A bumpy grid (units of 1e20) in which `v5` was moved onto the edge `(v6, v9)`, at a quarter
+/// of it: the face `(v5, v6, v9)` is degenerate, and the geodesics to `v10` run through `v5`
+/// into the face `(v6, v10, v9)` beyond that edge. Rounded at this scale, `v5`'s height over
+/// the edge was a few ulps rather than zero, so the float backends never counted `v5` as a
+/// point of the edge, dropped its window there (as narrow as that height), and reached `v10`
+/// only around `v6`: 4.794e20 against 4.718e20 (1.6 % long). Checked against the straight
+/// segment from `v5` to `v10` (which lies in the face beyond) and against the exact backend.
+#[test]
+fn a_vertex_moved_onto_an_edge_lights_the_face_beyond_it_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.0, 0.0, -8.400000000000001e+18],
+            [1e+20, 0.0, -2.9e+18],
+            [2e+20, 0.0, 1.55e+19],
+            [0.0, 1e+20, 2.2199999999999996e+19],
+            [1e+20, 1e+20, 1.87e+19],
+            [3.0000000000000007e+20, 1.25e+20, 2.8250000000000004e+19],
+            [3.0000000000000007e+20, 1e+20, 3.13e+19],
+            [1e+20, 2e+20, 4.3e+19],
+            [2e+20, 2e+20, -2.34e+19],
+            [3.0000000000000007e+20, 2e+20, 1.9100000000000004e+19],
+            [4e+20, 2e+20, -4.43e+19],
+        ],
+        vec![
+            [0, 1, 3],
+            [1, 4, 3],
+            [1, 2, 5],
+            [1, 5, 4],
+            [2, 6, 5],
+            [4, 5, 7],
+            [5, 8, 7],
+            [5, 6, 9],
+            [5, 9, 8],
+            [6, 10, 9],
+        ],
+    )
+    .expect("usable mesh");
+    let through_v5 = straight(&mesh, 5, 10);
+    let exact = distances::<Real>(&mesh, 0)[10];
+    for (backend, d) in every_backend(&mesh, 0) {
+        assert!(
+            d[10] <= (d[5] + through_v5) * (1.0 + 1e-12),
+            "{backend}: d(v10) = {} beyond d(v5) + |v5 v10| = {}",
+            d[10],
+            d[5] + through_v5
+        );
+        assert!(
+            (d[10] - exact).abs() <= 1e-12 * exact,
+            "{backend}: d(v10) = {}, exact {exact}",
+            d[10]
+        );
+    }
+}
+
+/// The traced path from `target` back to `source` in backend `S`: its length and distance.
+fn traced<S: Scalar>(mesh: &TriMesh, source: u32, target: u32) -> (f64, f64) {
+    let field = propagate::<S>(
+        mesh,
+        &[SurfacePoint::Vertex(VertexId(source))],
+        &PropagateOptions::default(),
+    )
+    .expect("valid source");
+    let path = field
+        .trace_back(&SurfacePoint::Vertex(VertexId(target)))
+        .expect("the target is reached, so a path leads back");
+    (path.length(), path.distance)
+}
+
+fn every_backend_traced(
+    mesh: &TriMesh,
+    source: u32,
+    target: u32,
+) -> [(&'static str, (f64, f64)); 3] {
+    [
+        ("f64", traced::<f64>(mesh, source, target)),
+        ("adaptive", traced::<Adaptive>(mesh, source, target)),
+        ("exact", traced::<Real>(mesh, source, target)),
+    ]
+}
+
+/// A flat strip (a grid rotated by (0.6, 0.8) in floats) whose source `v0` was moved onto
+/// the edge `(v1, v3)` at a quarter of it: the face `(v0, v1, v3)` is degenerate, and `v0`
+/// lights the face beyond that edge as a point of it. The back-trace from `v5` walked into
+/// that face and, finding the source neither a corner nor (at its height of a few ulps) a
+/// point of the edge, lost its way in the exact backend. The path bends at the boundary
+/// corner `v3`: 0.75 + 1 = 1.75.
+#[test]
+fn a_source_in_the_middle_of_a_degenerate_face_is_traced_to_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.39999999999999997, 0.9500000000000001, 0.0],
+            [0.6, 0.8, 0.0],
+            [1.2, 1.6, 0.0],
+            [-0.20000000000000007, 1.4, 0.0],
+            [0.3999999999999999, 2.2, 0.0],
+            [-1.0, 2.0, 0.0],
+            [-0.40000000000000013, 2.8, 0.0],
+        ],
+        vec![[0, 1, 3], [1, 2, 3], [2, 4, 3], [3, 4, 6], [3, 6, 5]],
+    )
+    .expect("usable mesh");
+    let want = straight(&mesh, 0, 3) + straight(&mesh, 3, 5);
+    for (backend, (length, distance)) in every_backend_traced(&mesh, 0, 5) {
+        assert!(
+            (distance - want).abs() <= 1e-12 * want,
+            "{backend}: distance {distance}, want {want}"
+        );
+        assert!(
+            (length - want).abs() <= 1e-12 * want,
+            "{backend}: length {length}, want {want}"
+        );
+    }
+}
+
+/// A pyramid (rotated) with its apex `v0` moved to the middle of the base edge `(v2, v3)`, a
+/// duplicated face and one corner unwelded. The geodesic to `v3` runs along the edge
+/// `(v0, v3)`; the adaptive back-trace arrived at `v3` by the wedge that `v0` sends beyond
+/// `(v2, v3)` as a point of it, did not find `v0` on that edge (a height of a few ulps), and
+/// went on to the far end `v2` and back: a path of 1.30 for a distance of 0.434.
+#[test]
+fn a_path_to_the_middle_corner_of_a_degenerate_face_has_the_distance_s_length() {
+    let mesh = TriMesh::new(
+        vec![
+            [
+                -0.5195620680722947,
+                -0.21926836748828082,
+                -0.7026532155827874,
+            ],
+            [0.47069323441506106, 0.4332837873751152, -0.7685785832780954],
+            [
+                -0.2529755502849691,
+                -0.0023377816125949025,
+                -0.967469847455283,
+            ],
+            [-0.78614858585962, -0.43619895336396675, -0.4378365837102918],
+            [
+                -0.7273357017733071,
+                -0.5415934163951783,
+                0.42149655780721373,
+            ],
+            [
+                -0.12082419930722416,
+                -0.2391569903884818,
+                0.9634341943330076,
+            ],
+            [0.5766703896017044, 0.24336952729428715, 0.7798862320500174],
+            [0.8399204132083549, 0.5426338270908193, 0.009068030253431614],
+            [0.0, 0.0, 0.0],
+            [
+                -0.7273357017733071,
+                -0.5415934163951783,
+                0.42149655780721373,
+            ],
+        ],
+        vec![
+            [0, 1, 2],
+            [0, 2, 3],
+            [0, 3, 4],
+            [0, 9, 5],
+            [0, 5, 6],
+            [0, 6, 7],
+            [0, 7, 1],
+            [8, 2, 1],
+            [8, 3, 2],
+            [8, 4, 3],
+            [8, 3, 2],
+            [8, 5, 4],
+            [8, 6, 5],
+            [8, 7, 6],
+            [8, 1, 7],
+        ],
+    )
+    .expect("usable mesh");
+    let want = straight(&mesh, 0, 3);
+    for (backend, (length, distance)) in every_backend_traced(&mesh, 0, 3) {
+        assert!(
+            (distance - want).abs() <= 1e-12 * want,
+            "{backend}: distance {distance}, want {want}"
+        );
+        assert!(
+            (length - want).abs() <= 1e-9 * want,
+            "{backend}: length {length}, want {want}"
+        );
+    }
+}
