@@ -292,7 +292,12 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 });
             }
             match event.kind {
-                EventKind::Wedge(at) => match self.wedges.due(at, event.key) {
+                EventKind::Wedge(at) => match self.wedges.due(
+                    at,
+                    event.key,
+                    self.unfolding.length(at.edge()),
+                    &mut self.stats,
+                ) {
                     Due::Stale => {}
                     Due::Later(key) => self.front.requeue(event, key),
                     Due::Now(wedge, kept) => {
@@ -618,7 +623,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             straight + &w.sigma
         };
         let at_apex = S::keep(apex_distance);
-        let apex = S::within(&layout.apex_shadow(&s), &w.b0, &w.b1, length).then(|| {
+        let apex = S::within(&layout.apex_shadow(&s), &w.b0, &w.b1, &w.reach(length)).then(|| {
             let d = S::kept(&at_apex).unwrap_or_else(apex_distance);
             (layout.apex_vertex(), d)
         });
