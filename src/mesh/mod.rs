@@ -241,16 +241,18 @@ impl TriMesh {
         /// Angle sums this close to 2 pi (relative) count as flat; acos-based sums carry ~1e-15.
         const FLAT_SLACK: f64 = 1e-9;
         let i = v.index();
-        self.topology.boundary_vertex[i]
-            || self.topology.on_degenerate_face[i]
-            || (self.topology.angle_sum[i] >= std::f64::consts::TAU * (1.0 - FLAT_SLACK)
-                && !self.topology.flat_vertex[i])
+        !self.topology.flat_vertex[i]
+            && (self.topology.boundary_vertex[i]
+                || self.topology.on_degenerate_face[i]
+                || self.topology.angle_sum[i] >= std::f64::consts::TAU * (1.0 - FLAT_SLACK))
     }
 
-    /// Whether the vertex is exactly flat: an interior manifold vertex, on no degenerate face,
-    /// whose faces lie exactly in one plane and turn the same way in it once around (decided
-    /// exactly on the input coordinates by orient3d and orient2d). No geodesic bends there:
-    /// the straight way through it is a straight way in the plane.
+    /// Whether the vertex is exactly flat: a vertex where the surface is a manifold, on no
+    /// degenerate face, whose faces lie exactly in one plane and turn the same way in it once
+    /// around, or, on the boundary, whose two boundary neighbours lie on one line through it
+    /// (an angle of exactly pi): decided exactly on the input coordinates by orient3d and
+    /// orient2d. No geodesic bends there: the straight way through it is a straight way in
+    /// the plane.
     ///
     /// # Panics
     /// If `v` is not a vertex of the mesh.

@@ -110,10 +110,13 @@ fn unit_scale(positions: &[DVec3]) -> f64 {
 /// corners collinear to within rounding, or two of them coincident. The sine of its largest
 /// angle is then below a few ulps, and an unfolding computed in f64 across it means little.
 /// Whether the faces of a vertex's star (its corners, in each face's order) lie exactly in
-/// the plane of the first and all turn the same way in it, decided exactly on the coordinates
-/// (Shewchuk's orient3d and orient2d, as `robust` evaluates them). With an angle sum below
-/// 3 pi (once around) the vertex is then exactly flat: no geodesic bends there.
-fn flat_star(mut star: impl Iterator<Item = [DVec3; 3]>) -> bool {
+/// the plane of the first and all turn the same way in it, and the three points `straight`, if
+/// given, lie on one line, decided exactly on the coordinates (Shewchuk's orient3d and
+/// orient2d, as `robust` evaluates them). With an angle sum below 3 pi (once around) an
+/// interior vertex is then exactly flat, and so is a boundary vertex with its boundary
+/// neighbours on a line through it and an angle sum below 3 pi / 2 (exactly pi): no geodesic
+/// bends there.
+fn flat_star(mut star: impl Iterator<Item = [DVec3; 3]>, straight: Option<[DVec3; 3]>) -> bool {
     let Some([a, b, c]) = star.next() else {
         return false;
     };
@@ -143,6 +146,14 @@ fn flat_star(mut star: impl Iterator<Item = [DVec3; 3]>) -> bool {
     let first = turn([a, b, c]);
     if robust::orient2d(c2(a), c2(b), c2(c)) == 0.0 {
         return false;
+    }
+    if let Some([p, q, r]) = straight {
+        let in_plane = [p, q, r]
+            .iter()
+            .all(|&x| robust::orient3d(c3(a), c3(b), c3(c), c3(x)) == 0.0);
+        if !in_plane || robust::orient2d(c2(p), c2(q), c2(r)) != 0.0 {
+            return false;
+        }
     }
     star.all(|f| {
         f.iter()
@@ -418,17 +429,48 @@ impl Topology {
             }
         }
 
+        // Vertices where the surface is not a manifold, whatever their stars look like.
+        let mut not_manifold = vec![false; nv];
+        for v in &report.non_manifold_vertices {
+            not_manifold[v.index()] = true;
+        }
+        for n in &report.non_manifold_edges {
+            for v in edges[n.edge.index()].vertices {
+                not_manifold[v.index()] = true;
+            }
+        }
         let flat_vertex = (0..nv)
             .map(|v| {
                 let star = &vertex_face_list
                     [vertex_face_start[v] as usize..vertex_face_start[v + 1] as usize];
-                !boundary_vertex[v]
-                    && !on_degenerate_face[v]
-                    && angle_sum[v] < 3.0 * std::f64::consts::PI
-                    && flat_star(
-                        star.iter()
-                            .map(|f| faces[f.index()].map(|c| scaled(c as usize))),
-                    )
+                let corners = star
+                    .iter()
+                    .map(|f| faces[f.index()].map(|c| scaled(c as usize)));
+                if on_degenerate_face[v] || not_manifold[v] {
+                    return false;
+                }
+                if !boundary_vertex[v] {
+                    return angle_sum[v] < 3.0 * std::f64::consts::PI && flat_star(corners, None);
+                }
+                // On the boundary: flat where the boundary runs straight through the vertex.
+                let mut ends = vertex_edge_list
+                    [vertex_edge_start[v] as usize..vertex_edge_start[v + 1] as usize]
+                    .iter()
+                    .map(|e| &edges[e.index()])
+                    .filter(|e| e.is_boundary());
+                let (Some(a), Some(b), None) = (ends.next(), ends.next(), ends.next()) else {
+                    return false;
+                };
+                let far = |e: &Edge| {
+                    let u = if e.vertices[0].index() == v {
+                        e.vertices[1]
+                    } else {
+                        e.vertices[0]
+                    };
+                    scaled(u.index())
+                };
+                let straight = [far(a), scaled(v), far(b)];
+                angle_sum[v] < 1.5 * std::f64::consts::PI && flat_star(corners, Some(straight))
             })
             .collect();
 

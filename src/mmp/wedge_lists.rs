@@ -407,14 +407,15 @@ impl<S: Scalar> WedgeLists<S> {
         }
         // Join waiting wedges that continue one another, among the pieces and with the
         // waiting wedges just before and after them.
+        let joins = |a: &Entry<S>, b: &Entry<S>| a.queued && b.queued && a.continued_by(b, length);
         let mut start = first;
-        if first > 0 && list[first - 1].queued {
+        if first > 0 && fresh.first().is_some_and(|x| joins(&list[first - 1], x)) {
             fresh.insert(0, list[first - 1].clone());
             events.insert(0, false);
             start -= 1;
         }
         let mut stop = end;
-        if end < list.len() && list[end].queued {
+        if end < list.len() && fresh.last().is_some_and(|x| joins(x, &list[end])) {
             fresh.push(list[end].clone());
             events.push(false);
             stop += 1;
@@ -423,7 +424,7 @@ impl<S: Scalar> WedgeLists<S> {
         joined_events.clear();
         for (entry, event) in fresh.drain(..).zip(events.drain(..)) {
             if let Some(last) = joined.last_mut() {
-                if last.queued && entry.queued && last.continued_by(&entry, length) {
+                if joins(last, &entry) {
                     last.join(entry);
                     *joined_events.last_mut().expect("one per entry") = true;
                     stats.wedges_joined += 1;
@@ -433,7 +434,8 @@ impl<S: Scalar> WedgeLists<S> {
             joined.push(entry);
             joined_events.push(event);
         }
-        // The neighbours taken in but not joined (they need no event) stay as they were.
+        // A neighbour taken in but not joined to the chain (which keeps its first wedge's
+        // function) needs no event, and stays as it was.
         if start < first && !joined_events[0] {
             joined.remove(0);
             joined_events.remove(0);
