@@ -476,7 +476,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 .map(|(_, d)| d.clone())
                 .unwrap_or_default()
         };
-        for &f in mesh.vertex_faces(v) {
+        // An exactly flat vertex bends no geodesic ([`TriMesh::is_flat_vertex`]; only one on
+        // the boundary acts as a pseudo-source): across its faces its wedges would only tie
+        // with the wedges passing it, on its shadow lines, and leave slivers there. Along its
+        // edges they carry its distance on the boundary line, where a float backend's rays
+        // from farther back graze the boundary.
+        let across = matches!(source, PseudoSource::Source(_)) || !mesh.is_flat_vertex(v);
+        for &f in mesh.vertex_faces(v).iter().filter(|_| across) {
             let corner = mesh.face(f).iter().position(|&c| c == v).expect("corner");
             let g = mesh.face_edges(f)[(corner + 1) % 3];
             let side = mesh.side_of(g, f).expect("edge of the face");
