@@ -101,6 +101,9 @@ impl Scalar for CloneOnly {
     ) -> bool {
         f64::same_distance_function(&raw(a), &raw(b), &scale.0)
     }
+    fn same_image(a: &SourceDistance<Self>, b: &SourceDistance<Self>, scale: &Self) -> bool {
+        f64::same_image(&raw(a), &raw(b), &scale.0)
+    }
     fn bisector_roots(
         a: &SourceDistance<Self>,
         b: &SourceDistance<Self>,

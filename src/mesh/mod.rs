@@ -223,7 +223,12 @@ impl TriMesh {
     /// boundary and bowtie vertices, ends of edges shared by more than two faces, vertices whose angle sum is at least 2 pi (saddles and,
     /// to be safe under rounding, flat ones), and the corners of degenerate faces
     /// ([`ValidationReport::zero_area_faces`]). Over-approximating costs wedges, never
-    /// correctness: a path through any vertex is a path on the surface.
+    /// correctness: a path through any vertex is a path on the surface. An interior vertex
+    /// that [`is_flat_vertex`](Self::is_flat_vertex) bends no geodesic and is left out: its
+    /// wedges would only tie with the wedges passing it, along its shadow lines, and cut them
+    /// there (in a flat region, one cut per vertex behind an edge). A flat boundary vertex
+    /// stays in: the way along the boundary line runs through it, and the engine sends its
+    /// distance on along its edges only.
     ///
     /// Corners of degenerate faces bend because their angle sums mean nothing: a vertex at the
     /// same place as another is, on the surface, the same point, so it must send wedges into
@@ -240,7 +245,21 @@ impl TriMesh {
         let i = v.index();
         self.topology.boundary_vertex[i]
             || self.topology.on_degenerate_face[i]
-            || self.topology.angle_sum[i] >= std::f64::consts::TAU * (1.0 - FLAT_SLACK)
+            || (self.topology.angle_sum[i] >= std::f64::consts::TAU * (1.0 - FLAT_SLACK)
+                && !self.topology.flat_vertex[i])
+    }
+
+    /// Whether the vertex is exactly flat: a vertex where the surface is a manifold, on no
+    /// degenerate face, whose faces lie exactly in one plane and turn the same way in it once
+    /// around, or, on the boundary, whose two boundary neighbours lie on one line through it
+    /// (an angle of exactly pi): decided exactly on the input coordinates by orient3d and
+    /// orient2d. No geodesic bends there: the straight way through it is a straight way in
+    /// the plane.
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
+    pub fn is_flat_vertex(&self, v: VertexId) -> bool {
+        self.topology.flat_vertex[v.index()]
     }
 
     /// The power of two by which the engine multiplies coordinates so that its arithmetic

@@ -69,6 +69,9 @@ pub(super) struct Topology {
     pub(super) angle_sum: Vec<f64>,
     pub(super) boundary_vertex: Vec<bool>,
     pub(super) on_degenerate_face: Vec<bool>,
+    /// Interior vertices whose faces lie exactly in one plane, once around (see
+    /// `flat_star`).
+    pub(super) flat_vertex: Vec<bool>,
     pub(super) unit_scale: f64,
     vertex_face_start: Vec<u32>,
     vertex_face_list: Vec<FaceId>,
@@ -106,6 +109,60 @@ fn unit_scale(positions: &[DVec3]) -> f64 {
 /// Whether a triangle (in unit-scaled coordinates) is degenerate for the f64 geometry: its
 /// corners collinear to within rounding, or two of them coincident. The sine of its largest
 /// angle is then below a few ulps, and an unfolding computed in f64 across it means little.
+/// Whether the faces of a vertex's star (its corners, in each face's order) lie exactly in
+/// the plane of the first and all turn the same way in it, and the three points `straight`, if
+/// given, lie on one line, decided exactly on the coordinates (Shewchuk's orient3d and
+/// orient2d, as `robust` evaluates them). With an angle sum below 3 pi (once around) an
+/// interior vertex is then exactly flat, and so is a boundary vertex with its boundary
+/// neighbours on a line through it and an angle sum below 3 pi / 2 (exactly pi): no geodesic
+/// bends there.
+fn flat_star(mut star: impl Iterator<Item = [DVec3; 3]>, straight: Option<[DVec3; 3]>) -> bool {
+    let Some([a, b, c]) = star.next() else {
+        return false;
+    };
+    let c3 = |p: DVec3| robust::Coord3D {
+        x: p.x,
+        y: p.y,
+        z: p.z,
+    };
+    let n = (b - a).cross(c - a).abs();
+    // The coordinate plane the first face's plane projects onto without folding.
+    let drop = if n.x >= n.y && n.x >= n.z {
+        0
+    } else if n.y >= n.z {
+        1
+    } else {
+        2
+    };
+    let c2 = |p: DVec3| {
+        let [u, v] = match drop {
+            0 => [p.y, p.z],
+            1 => [p.z, p.x],
+            _ => [p.x, p.y],
+        };
+        robust::Coord { x: u, y: v }
+    };
+    let turn = |[p, q, r]: [DVec3; 3]| robust::orient2d(c2(p), c2(q), c2(r)).signum();
+    let first = turn([a, b, c]);
+    if robust::orient2d(c2(a), c2(b), c2(c)) == 0.0 {
+        return false;
+    }
+    if let Some([p, q, r]) = straight {
+        let in_plane = [p, q, r]
+            .iter()
+            .all(|&x| robust::orient3d(c3(a), c3(b), c3(c), c3(x)) == 0.0);
+        if !in_plane || robust::orient2d(c2(p), c2(q), c2(r)) != 0.0 {
+            return false;
+        }
+    }
+    star.all(|f| {
+        f.iter()
+            .all(|&q| robust::orient3d(c3(a), c3(b), c3(c), c3(q)) == 0.0)
+            && robust::orient2d(c2(f[0]), c2(f[1]), c2(f[2])) != 0.0
+            && turn(f) == first
+    })
+}
+
 fn is_degenerate(p: [DVec3; 3]) -> bool {
     /// Sines of the face's largest angle below this count as degenerate: well above the
     /// rounding of a cross product of unit vectors (a few ulps), far below any angle a
@@ -372,6 +429,51 @@ impl Topology {
             }
         }
 
+        // Vertices where the surface is not a manifold, whatever their stars look like.
+        let mut not_manifold = vec![false; nv];
+        for v in &report.non_manifold_vertices {
+            not_manifold[v.index()] = true;
+        }
+        for n in &report.non_manifold_edges {
+            for v in edges[n.edge.index()].vertices {
+                not_manifold[v.index()] = true;
+            }
+        }
+        let flat_vertex = (0..nv)
+            .map(|v| {
+                let star = &vertex_face_list
+                    [vertex_face_start[v] as usize..vertex_face_start[v + 1] as usize];
+                let corners = star
+                    .iter()
+                    .map(|f| faces[f.index()].map(|c| scaled(c as usize)));
+                if on_degenerate_face[v] || not_manifold[v] {
+                    return false;
+                }
+                if !boundary_vertex[v] {
+                    return angle_sum[v] < 3.0 * std::f64::consts::PI && flat_star(corners, None);
+                }
+                // On the boundary: flat where the boundary runs straight through the vertex.
+                let mut ends = vertex_edge_list
+                    [vertex_edge_start[v] as usize..vertex_edge_start[v + 1] as usize]
+                    .iter()
+                    .map(|e| &edges[e.index()])
+                    .filter(|e| e.is_boundary());
+                let (Some(a), Some(b), None) = (ends.next(), ends.next(), ends.next()) else {
+                    return false;
+                };
+                let far = |e: &Edge| {
+                    let u = if e.vertices[0].index() == v {
+                        e.vertices[1]
+                    } else {
+                        e.vertices[0]
+                    };
+                    scaled(u.index())
+                };
+                let straight = [far(a), scaled(v), far(b)];
+                angle_sum[v] < 1.5 * std::f64::consts::PI && flat_star(corners, Some(straight))
+            })
+            .collect();
+
         let mut components = UnionFind::new(faces.len());
         for ei in 0..edges.len() {
             let mut around = faces_of(ei);
@@ -396,6 +498,7 @@ impl Topology {
                 angle_sum,
                 boundary_vertex,
                 on_degenerate_face,
+                flat_vertex,
                 unit_scale,
                 vertex_face_start,
                 vertex_face_list,

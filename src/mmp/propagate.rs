@@ -292,7 +292,12 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 });
             }
             match event.kind {
-                EventKind::Wedge(at) => match self.wedges.due(at, event.key) {
+                EventKind::Wedge(at) => match self.wedges.due(
+                    at,
+                    event.key,
+                    self.unfolding.length(at.edge()),
+                    &mut self.stats,
+                ) {
                     Due::Stale => {}
                     Due::Later(key) => self.front.requeue(event, key),
                     Due::Now(wedge, kept) => {
@@ -471,7 +476,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 .map(|(_, d)| d.clone())
                 .unwrap_or_default()
         };
-        for &f in mesh.vertex_faces(v) {
+        // An exactly flat vertex bends no geodesic ([`TriMesh::is_flat_vertex`]; only one on
+        // the boundary acts as a pseudo-source): across its faces its wedges would only tie
+        // with the wedges passing it, on its shadow lines, and leave slivers there. Along its
+        // edges they carry its distance on the boundary line, where a float backend's rays
+        // from farther back graze the boundary.
+        let across = matches!(source, PseudoSource::Source(_)) || !mesh.is_flat_vertex(v);
+        for &f in mesh.vertex_faces(v).iter().filter(|_| across) {
             let corner = mesh.face(f).iter().position(|&c| c == v).expect("corner");
             let g = mesh.face_edges(f)[(corner + 1) % 3];
             let side = mesh.side_of(g, f).expect("edge of the face");
@@ -622,7 +633,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             straight + &w.sigma
         };
         let at_apex = S::keep(apex_distance);
-        let apex = S::within(&layout.apex_shadow(&s), &w.b0, &w.b1, length).then(|| {
+        let apex = S::within(&layout.apex_shadow(&s), &w.b0, &w.b1, &w.reach(length)).then(|| {
             let d = S::kept(&at_apex).unwrap_or_else(apex_distance);
             (layout.apex_vertex(), d)
         });

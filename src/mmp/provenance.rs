@@ -103,4 +103,27 @@ impl<S: Scalar> Provenance<S> {
             image: self.image.clone(),
         }
     }
+
+    /// The provenance of a wedge joined from two that continue one another, this one first
+    /// and `next` after it along the edge, with the same distance function (as the backend
+    /// decided): the anchor of each range end from the wedge that owned that end, the
+    /// distances at the edge's vertices and the region image from the first where it keeps
+    /// them (the two give the same values there).
+    pub(crate) fn joined(self, next: Self) -> Self {
+        let either = |a: S::Kept<S>, b: S::Kept<S>| if S::kept(&a).is_some() { a } else { b };
+        let [first_0, first_1] = self.at_ends;
+        let [next_0, next_1] = next.at_ends;
+        let [anchor_0, _] = self.anchors;
+        let [_, anchor_1] = next.anchors;
+        let image = if S::kept(&self.image).is_some() {
+            self.image
+        } else {
+            next.image
+        };
+        Provenance {
+            at_ends: [either(first_0, next_0), either(first_1, next_1)],
+            anchors: [anchor_0, anchor_1],
+            image,
+        }
+    }
 }

@@ -39,6 +39,10 @@ pub struct Stats {
     /// New wedges discarded because a vertex already reached their whole range more cheaply
     /// [SSK+05 §4.2].
     pub wedges_filtered: u64,
+    /// Wedges joined to the wedge before them on their edge, which they continue: the same
+    /// image of the same pseudo-source, with ranges that meet (in an exactly flat region, on
+    /// the shadow line of a vertex).
+    pub wedges_joined: u64,
     /// Times a vertex emitted wedges as a pseudo-source.
     pub pseudo_source_emissions: u64,
     /// Cases of eq. (2) met in wedge intersections.

@@ -86,6 +86,15 @@ impl<S: Scalar> Wedge<S> {
         }
     }
 
+    /// The scale of the constructions that place points of the wedge's range on its edge (of
+    /// length `length`): the edge's length or the pseudo-source's offsets from the edge's
+    /// first vertex, whichever is larger. Rays from a pseudo-source many edge lengths away
+    /// meet the edge at positions rounded to ulps of that distance, not of the edge.
+    pub(crate) fn reach(&self, length: &S) -> S {
+        let offset = S::max_of(&self.source_x, &-self.source_x.clone());
+        S::max_of(length, &S::max_of(&offset, &self.source_y))
+    }
+
     /// The smallest distance the wedge gives on its range (its priority [SSK+05 §4]).
     pub fn min_distance(&self) -> S {
         let inside =

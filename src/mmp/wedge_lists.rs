@@ -11,7 +11,7 @@ use super::provenance::Provenance;
 use super::stats::Stats;
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{EdgeId, Side, SourceId, VertexId};
-use crate::scalar::{Scalar, Site};
+use crate::scalar::{Scalar, Site, SourceDistance};
 use std::cmp::Ordering;
 use std::ops::Range;
 
@@ -54,6 +54,42 @@ impl<S: Scalar> Entry<S> {
         }
     }
 
+    /// The distance function the wedge gives along its edge.
+    fn distance_function(&self) -> SourceDistance<S> {
+        SourceDistance {
+            x: self.source_x.clone(),
+            y: self.source_y.clone(),
+            sigma: self.sigma.clone(),
+        }
+    }
+
+    /// Whether `next`, the following wedge along an edge of length `length`, continues this
+    /// one: the same pseudo-source, source and side, ranges that meet (no extent between
+    /// them), and the same distance function, as the backend decides it (eq. (2) with
+    /// infinitely many solutions). Then the two are one wedge of one image of the
+    /// pseudo-source, split only by the shadow line of a vertex whose faces lie in the plane
+    /// of the unfolding: in an exactly flat region, a wedge per vertex behind the edge.
+    fn continued_by(&self, next: &Self, length: &S) -> bool {
+        self.pseudo_source == next.pseudo_source
+            && self.source == next.source
+            && self.tau == next.tau
+            && S::same_image(
+                &self.distance_function(),
+                &next.distance_function(),
+                &(next.b1.clone() - &self.b0),
+            )
+            && !S::has_extent(&self.b1, &next.b0, length)
+    }
+
+    /// This wedge extended over `next`, which continues it ([`Entry::continued_by`]): the range
+    /// runs on to `next`'s end, with what `next` keeps of that end. The distance function is
+    /// this wedge's (the backend found the two the same), and so are the serial and the queue
+    /// state (the caller joins only wedges in the same state).
+    fn join(&mut self, next: Entry<S>) {
+        self.b1 = next.b1;
+        self.kept = std::mem::take(&mut self.kept).joined(next.kept);
+    }
+
     /// The wedge, on `edge`.
     fn wedge(&self, edge: EdgeId) -> Wedge<S> {
         Wedge {
@@ -79,6 +115,12 @@ struct Scratch<S: Scalar> {
     named: Vec<bool>,
     /// The rebuilt stretch of the list.
     fresh: Vec<Entry<S>>,
+    /// Whether each entry of `fresh` needs a queue event.
+    events: Vec<bool>,
+    /// The rebuilt stretch, adjacent wedges of one image joined.
+    joined: Vec<Entry<S>>,
+    /// Whether each entry of `joined` needs a queue event.
+    joined_events: Vec<bool>,
 }
 
 impl<S: Scalar> Default for Scratch<S> {
@@ -88,6 +130,9 @@ impl<S: Scalar> Default for Scratch<S> {
             overlapped: Vec::new(),
             named: Vec::new(),
             fresh: Vec::new(),
+            events: Vec::new(),
+            joined: Vec::new(),
+            joined_events: Vec::new(),
         }
     }
 }
@@ -99,6 +144,13 @@ pub(crate) struct WedgeRef {
     edge: EdgeId,
     serial: u32,
     place: u32,
+}
+
+impl WedgeRef {
+    /// The edge of the wedge.
+    pub(crate) fn edge(&self) -> EdgeId {
+        self.edge
+    }
 }
 
 /// What inserting a wedge tells the propagation: the wedges it queues and the vertices of the
@@ -165,13 +217,17 @@ impl<S: Scalar> WedgeLists<S> {
         }
     }
 
-    /// The wedge of a queue event popped at `key`, if it is due.
-    pub(crate) fn due(&mut self, at: WedgeRef, key: f64) -> Due<S> {
+    /// The wedge of a queue event popped at `key`, if it is due. A due wedge is marked as
+    /// propagated and joined to the propagated wedges beside it that it continues
+    /// ([`Entry::continued_by`]; `length`: its edge's length): their children and its own are
+    /// the children of the joined wedge, so the edge keeps one wedge where the shadow lines of
+    /// flat vertices would have cut many.
+    pub(crate) fn due(&mut self, at: WedgeRef, key: f64, length: &S, stats: &mut Stats) -> Due<S> {
         let list = &mut self.lists[at.edge.index()];
-        let Some(entry) = find_near(list, at.place as usize, at.serial).map(|i| &mut list[i])
-        else {
+        let Some(mut i) = find_near(list, at.place as usize, at.serial) else {
             return Due::Stale;
         };
+        let entry = &mut list[i];
         if !entry.queued {
             return Due::Stale;
         }
@@ -181,7 +237,21 @@ impl<S: Scalar> WedgeLists<S> {
             return Due::Later(now);
         }
         entry.queued = false;
-        Due::Now(wedge, entry.kept.clone())
+        let kept = entry.kept.clone();
+        if i > 0 && !list[i - 1].queued && list[i - 1].continued_by(&list[i], length) {
+            let next = list.remove(i);
+            i -= 1;
+            list[i].join(next);
+            self.entries -= 1;
+            stats.wedges_joined += 1;
+        }
+        if i + 1 < list.len() && !list[i + 1].queued && list[i].continued_by(&list[i + 1], length) {
+            let next = list.remove(i + 1);
+            list[i].join(next);
+            self.entries -= 1;
+            stats.wedges_joined += 1;
+        }
+        Due::Now(wedge, kept)
     }
 
     /// The final wedges of every edge, each list exactly sized, moved out of their entries.
@@ -244,7 +314,11 @@ impl<S: Scalar> WedgeLists<S> {
     /// piece of an existing wedge keeps its serial, and so its queue event (trimming only
     /// raises its key, and the event is re-queued with the new key when it pops); a second
     /// piece (the new wedge won in its middle) is a wedge of its own, cut from it as it was,
-    /// with the anchor of its end.
+    /// with the anchor of its end. Waiting wedges that continue one another
+    /// ([`Entry::continued_by`]), among the pieces and with the waiting wedges beside them,
+    /// are joined into one, queued anew (the joined range may come nearer than the first
+    /// one's key); a wedge beside a propagated one that it continues joins it once it is
+    /// propagated itself ([`WedgeLists::due`]).
     fn rebuild(
         &mut self,
         (w, kept): (&Wedge<S>, &Provenance<S>),
@@ -262,15 +336,17 @@ impl<S: Scalar> WedgeLists<S> {
             *serial = s.wrapping_add(1);
             s
         };
-        // The name of the entry that will be the `i`-th of the rebuilt stretch.
-        let name = |serial: u32, i: usize| WedgeRef {
-            edge: e,
-            serial,
-            place: (first + i) as u32,
-        };
-        let Scratch { named, fresh, .. } = &mut self.scratch;
+        let Scratch {
+            named,
+            fresh,
+            events,
+            joined,
+            joined_events,
+            ..
+        } = &mut self.scratch;
         named.clear();
         named.resize(end - first, false);
+        events.clear();
         let zero = S::zero();
         let mine = w.distance_function();
         // Which range ends of a wedge a piece keeps (asked only where anchors depend on it).
@@ -285,13 +361,14 @@ impl<S: Scalar> WedgeLists<S> {
             if !S::has_extent(&piece.lo, &piece.hi, length) {
                 continue;
             }
-            let entry = match piece.owner {
+            let (entry, event) = match piece.owner {
                 Owner::New => {
-                    if S::within(&zero, &piece.lo, &piece.hi, length) {
+                    let reach = w.reach(length);
+                    if S::within(&zero, &piece.lo, &piece.hi, &reach) {
                         let d = S::kept(&kept.at_ends[0]).unwrap_or_else(|| mine.at(&zero));
                         arrivals.reach(v0, d, w);
                     }
-                    if S::within(length, &piece.lo, &piece.hi, length) {
+                    if S::within(length, &piece.lo, &piece.hi, &reach) {
                         let d = S::kept(&kept.at_ends[1]).unwrap_or_else(|| mine.at(length));
                         arrivals.reach(v1, d, w);
                     }
@@ -304,9 +381,7 @@ impl<S: Scalar> WedgeLists<S> {
                     wedge.b0 = piece.lo;
                     wedge.b1 = piece.hi;
                     stats.wedges_created += 1;
-                    let serial = next_serial();
-                    arrivals.queue(name(serial, fresh.len()), &wedge);
-                    Entry::new(wedge, piece_kept, serial)
+                    (Entry::new(wedge, piece_kept, next_serial()), true)
                 }
                 Owner::Old(k) => {
                     let k = k as usize;
@@ -317,31 +392,82 @@ impl<S: Scalar> WedgeLists<S> {
                         entry.b0 = piece.lo;
                         entry.b1 = piece.hi;
                     }
+                    let mut event = false;
                     if named[k] {
                         entry.serial = next_serial();
                         stats.wedges_created += 1;
-                        if entry.queued {
-                            arrivals.queue(name(entry.serial, fresh.len()), &entry.wedge(e));
-                        }
+                        event = entry.queued;
                     }
                     named[k] = true;
-                    entry
+                    (entry, event)
                 }
             };
             fresh.push(entry);
+            events.push(event);
         }
-        self.entries = self.entries + fresh.len() - (end - first);
-        if fresh.len() == end - first {
-            for (old, new) in list[first..end].iter_mut().zip(fresh.drain(..)) {
+        // Join waiting wedges that continue one another, among the pieces and with the
+        // waiting wedges just before and after them.
+        let joins = |a: &Entry<S>, b: &Entry<S>| a.queued && b.queued && a.continued_by(b, length);
+        let mut start = first;
+        if first > 0 && fresh.first().is_some_and(|x| joins(&list[first - 1], x)) {
+            fresh.insert(0, list[first - 1].clone());
+            events.insert(0, false);
+            start -= 1;
+        }
+        let mut stop = end;
+        if end < list.len() && fresh.last().is_some_and(|x| joins(x, &list[end])) {
+            fresh.push(list[end].clone());
+            events.push(false);
+            stop += 1;
+        }
+        joined.clear();
+        joined_events.clear();
+        for (entry, event) in fresh.drain(..).zip(events.drain(..)) {
+            if let Some(last) = joined.last_mut() {
+                if joins(last, &entry) {
+                    last.join(entry);
+                    *joined_events.last_mut().expect("one per entry") = true;
+                    stats.wedges_joined += 1;
+                    continue;
+                }
+            }
+            joined.push(entry);
+            joined_events.push(event);
+        }
+        // A neighbour taken in but not joined to the chain (which keeps its first wedge's
+        // function) needs no event, and stays as it was.
+        if start < first && !joined_events[0] {
+            joined.remove(0);
+            joined_events.remove(0);
+            start += 1;
+        }
+        if stop > end && !joined_events.last().expect("a neighbour") {
+            joined.pop();
+            joined_events.pop();
+            stop -= 1;
+        }
+        for (i, (entry, &event)) in joined.iter().zip(joined_events.iter()).enumerate() {
+            if event {
+                let at = WedgeRef {
+                    edge: e,
+                    serial: entry.serial,
+                    place: (start + i) as u32,
+                };
+                arrivals.queue(at, &entry.wedge(e));
+            }
+        }
+        self.entries = self.entries + joined.len() - (stop - start);
+        if joined.len() == stop - start {
+            for (old, new) in list[start..stop].iter_mut().zip(joined.drain(..)) {
                 *old = new;
             }
         } else {
-            let needed = list.len() + fresh.len() - (end - first);
+            let needed = list.len() + joined.len() - (stop - start);
             if needed > list.capacity() {
                 // A run's memory is mostly these lists: they grow by a quarter, not double.
                 list.reserve_exact(needed + needed / 4 - list.len());
             }
-            list.splice(first..end, fresh.drain(..));
+            list.splice(start..stop, joined.drain(..));
         }
         let bytes = self.entries * std::mem::size_of::<Entry<S>>()
             + self.lists.len()
@@ -405,12 +531,18 @@ mod tests {
         let [first, second, ..] = events.0[..] else {
             panic!("five queue events, got {}", events.0.len());
         };
-        match lists.due(first, 1.0) {
+        match lists.due(first, 1.0, &1.0, &mut Stats::default()) {
             Due::Now(w, _) => assert_eq!([w.b0, w.b1], [0.4, 0.6]),
             _ => panic!("the first wedge is due"),
         }
         // Propagated once: its event is stale from then on, as is that of the wedge that left.
-        assert!(matches!(lists.due(first, 1.0), Due::Stale));
-        assert!(matches!(lists.due(second, 1.0), Due::Stale));
+        assert!(matches!(
+            lists.due(first, 1.0, &1.0, &mut Stats::default()),
+            Due::Stale
+        ));
+        assert!(matches!(
+            lists.due(second, 1.0, &1.0, &mut Stats::default()),
+            Due::Stale
+        ));
     }
 }

@@ -52,6 +52,12 @@ impl Resolution {
     /// [`Resolution::EXTENT`] let wedges claim vertices beyond their ranges on edges 1e8 times
     /// longer than the distances at hand, 3e-6 of a distance short.
     pub const WITHIN: f64 = 64.0 * f64::EPSILON;
+    /// Two images of one pseudo-source whose positions and sigmas agree to this fraction of
+    /// the range's scale (or of their distance from the edge) are one image reached by two
+    /// ways ([`Scalar::same_image`]): each way rounds its own chain of unfoldings, a few ulps
+    /// per face, so this is the `f64` backend's `SAME_SOURCE`. Asked only of wedges of one
+    /// pseudo-source whose ranges meet, to join them; never to decide eq. (2).
+    pub const SAME_IMAGE: f64 = 1e-12;
 }
 
 /// An `f64` whose predicates are exact for its value.
@@ -255,6 +261,14 @@ impl Scalar for Adaptive {
             || roots::same_distance_function::<DoubleDouble>(&lift(a), &lift(b)),
             || roots::same_distance_function::<Q>(&lift(a), &lift(b)),
         )
+    }
+
+    /// At [`Resolution::SAME_IMAGE`]: the images are rounded constructions.
+    fn same_image(a: &SourceDistance<Self>, b: &SourceDistance<Self>, scale: &Self) -> bool {
+        let same = Resolution::SAME_IMAGE * scale.0.abs().max(a.y.0.abs()).max(b.y.0.abs());
+        (a.x.0 - b.x.0).abs() <= same
+            && (a.sigma.0 - b.sigma.0).abs() <= same
+            && (a.y.0.abs() - b.y.0.abs()).abs() <= same
     }
 
     fn bisector_roots(

@@ -116,6 +116,13 @@ impl Scalar for f64 {
             && (a.y.abs() - b.y.abs()).abs() <= same
     }
 
+    /// As [`Scalar::same_distance_function`], whose tolerance already covers two chains of
+    /// constructions ([`FloatTolerance::SAME_SOURCE`]).
+    #[inline]
+    fn same_image(a: &SourceDistance<f64>, b: &SourceDistance<f64>, scale: &f64) -> bool {
+        f64::same_distance_function(a, b, scale)
+    }
+
     fn bisector_roots(
         a: &SourceDistance<f64>,
         b: &SourceDistance<f64>,

@@ -192,6 +192,14 @@ pub trait Scalar: Field {
         scale: &Self,
     ) -> bool;
 
+    /// Whether two distance functions are one image of one pseudo-source, reached by two ways
+    /// across faces and so built by two chains of constructions (in a flat region, the wedges
+    /// on the two sides of a vertex's shadow line), on a range of length about `scale`: then
+    /// the two wedges are joined into one. [`Scalar::same_distance_function`] for number types
+    /// whose constructions are exact; at the backend's resolution for those that round them,
+    /// where the two chains give images that differ in their last bits.
+    fn same_image(a: &SourceDistance<Self>, b: &SourceDistance<Self>, scale: &Self) -> bool;
+
     /// Roots of eq. (2) [LZT §2] that solve eq. (1), strictly inside `(lo, hi)`, in increasing
     /// order; by Property 1 there are none, one, two or infinitely many.
     fn bisector_roots(

@@ -64,6 +64,7 @@ fn report<S: Scalar>(
         "wedges_created": stats.wedges_created,
         "wedges_propagated": stats.wedges_propagated,
         "wedges_filtered": stats.wedges_filtered,
+        "wedges_joined": stats.wedges_joined,
         "pseudo_source_emissions": stats.pseudo_source_emissions,
         "propagation_seconds": stats.propagation_seconds,
         "peak_queue": stats.peak_queue,

@@ -540,6 +540,12 @@ impl Scalar for Real {
         roots::same_distance_function(a, b) == Some(true)
     }
 
+    /// Certified, as [`Scalar::same_distance_function`]: in a flat region the image is one
+    /// expression however it crossed the region (see `mmp/flat_region.rs`).
+    fn same_image(a: &SourceDistance<Self>, b: &SourceDistance<Self>, scale: &Self) -> bool {
+        Self::same_distance_function(a, b, scale)
+    }
+
     fn bisector_roots(
         a: &SourceDistance<Self>,
         b: &SourceDistance<Self>,
