@@ -4,8 +4,11 @@
 //! values come from the coordinates (closed forms of the unfolded surface), never from the
 //! engine.
 
+use exact_geodesics::glam::DVec3;
 use exact_geodesics::scalar::{Adaptive, Real};
-use exact_geodesics::{propagate, PropagateOptions, Scalar, SurfacePoint, TriMesh, VertexId};
+use exact_geodesics::{
+    propagate, PropagateOptions, Scalar, SurfacePoint, TraceError, TriMesh, VertexId,
+};
 
 fn distances<S: Scalar>(mesh: &TriMesh, source: u32) -> Vec<f64> {
     propagate::<S>(
@@ -251,5 +254,46 @@ fn a_path_to_the_middle_corner_of_a_degenerate_face_has_the_distance_s_length() 
             (length - want).abs() <= 1e-9 * want,
             "{backend}: length {length}, want {want}"
         );
+    }
+}
+
+/// A needle face `(v7, v4, v3)`: `v4` lies 1.4e-7 from `v7` (an octahedron's bottom corner,
+/// moved). From `v0` the distance of `v7` is right in f64 (20.00000004: down through `v4`, the
+/// needle's short edge), but rounding sent the back-trace from `v7` by the wrong face, to the
+/// edge `(v2, v3)` near `v3` and on to `v0`: a path 28.28 long, given as the shortest. A
+/// path whose length is not the distance is refused ([`TraceError::NotShortest`]), never
+/// returned.
+#[test]
+fn a_traced_path_is_as_long_as_its_distance_or_refused() {
+    let positions = [
+        [0.0, 0.0, 10.0],
+        [10.0, 0.0, 0.0],
+        [5.000000000000002, 8.660254037844386, 0.0],
+        [-9.999999999995, 8.661478684643534e-12, 0.0],
+        [-1e-07, 1.2246467991473531e-23, -9.9999999],
+        [-5.000000000000004, -8.660254037844384, 0.0],
+        [5.000000000000002, -8.660254037844386, 0.0],
+        [0.0, 0.0, -10.0],
+    ];
+    let faces = vec![[0, 2, 3], [0, 3, 4], [7, 2, 1], [7, 3, 2], [7, 4, 3]];
+    let mesh = TriMesh::new(positions.map(DVec3::from_array).to_vec(), faces)
+        .expect("a fan with a needle");
+    let source = [SurfacePoint::Vertex(VertexId(0))];
+    let field = propagate::<f64>(&mesh, &source, &PropagateOptions::default()).expect("a source");
+    // Down the face (v0, v3, v4) to v4, then the needle's short edge: the surface's shortest way.
+    let p = |v: usize| DVec3::from_array(positions[v]);
+    let straight = p(0).distance(p(4)) + p(4).distance(p(7));
+    let distance = field.vertex_distance(VertexId(7));
+    assert!(
+        (distance - straight).abs() <= 1e-12 * straight,
+        "{distance} against {straight}"
+    );
+    match field.trace_back(&SurfacePoint::Vertex(VertexId(7))) {
+        Ok(path) => assert!(
+            (path.length() - distance).abs() <= 1e-9 * distance,
+            "a path {} long for a distance of {distance}",
+            path.length()
+        ),
+        Err(e) => assert!(matches!(e, TraceError::NotShortest { .. }), "{e}"),
     }
 }

@@ -15,7 +15,7 @@
 //! Violations are values ([`Violation`]), one per kind and check, counting how often the
 //! invariant failed and describing the first failure.
 
-use super::measure::{distance_f64, distance_in, EdgePaths};
+use super::measure::{distance_in, EdgePaths};
 use crate::mesh::shapes::SplitMix64;
 use crate::mesh::{FaceId, SourceId, TriMesh, VertexId};
 use crate::mmp::{propagate, GeodesicField, PropagateOptions, SurfacePoint, TraceError};
@@ -380,21 +380,8 @@ fn check_trace<S: Scalar, R: Scalar>(
             )
         });
     }
-    let length: f64 = path
-        .points
-        .windows(2)
-        .map(|w| distance_f64(w[0], w[1]))
-        .sum();
-    // The points are f64 positions, each within half an ulp of its coordinates of the point
-    // the walk found, and each moves the two segments it ends by as much: a needle 1e-11 long
-    // at coordinates near 1 is measured to 1e-5 of its length at best.
-    let resolution: f64 = path
-        .points
-        .iter()
-        .map(|p| 2.0 * f64::EPSILON * p.abs().max_element())
-        .sum();
-    let slack = tolerances.trace_length * length.max(distance) + resolution;
-    let as_long = (length - distance).abs() <= slack;
+    let length = path.length();
+    let as_long = path.is_as_long_as_its_distance(tolerances.trace_length);
     if !as_long {
         findings.add(ViolationKind::TraceLength, || {
             format!(

@@ -41,7 +41,25 @@ impl GeodesicPath {
             })
             .fold(0.0, |sum, d| sum + d)
     }
+
+    /// Whether the polyline's length equals `distance` within `relative` of the larger, plus
+    /// what rounding the points to `f64` can move it by: each point is within half an ulp of
+    /// the point the walk found and moves the two segments it ends by as much (a needle
+    /// 1e-11 long at coordinates near 1 is measured to 1e-5 of its length at best).
+    pub fn is_as_long_as_its_distance(&self, relative: f64) -> bool {
+        let length = self.length();
+        let resolution: f64 = self
+            .points
+            .iter()
+            .map(|p| 2.0 * f64::EPSILON * p.abs().max_element())
+            .sum();
+        (length - self.distance).abs() <= relative * length.max(self.distance) + resolution
+    }
 }
+
+/// How far a traced path's length may be from the target's distance, relative: a walk that
+/// strays further (in a tie between arrivals that rounding decided) is an error, not a path.
+const TRACE_LENGTH: f64 = 1e-9;
 
 /// A shortest path with the backend's own numbers ([`GeodesicField::trace_back_exact`]).
 #[derive(Clone, Debug)]
@@ -70,6 +88,16 @@ pub enum TraceError {
     Lost {
         /// The last simplex the walk was in.
         near: String,
+    },
+    /// The walk arrived by a way whose length is not the target's distance (rounding in a
+    /// degenerate configuration sent it through the wrong face): no path is given rather than
+    /// a wrong one.
+    #[error("the traced path is {length:e} long but the distance is {distance:e}")]
+    NotShortest {
+        /// The traced polyline's length.
+        length: f64,
+        /// The target's distance.
+        distance: f64,
     },
 }
 
@@ -108,10 +136,12 @@ impl<S: Scalar> GeodesicField<'_, S> {
     ///
     /// # Errors
     /// [`TraceError::Unreachable`] if no source reaches the target, [`TraceError::Point`] for an
-    /// invalid target, [`TraceError::Lost`] if rounding sends the walk astray.
+    /// invalid target, [`TraceError::Lost`] if rounding sends the walk astray, and
+    /// [`TraceError::NotShortest`] if it sends the walk by a way longer or shorter than the
+    /// distance by more than 1e-9 of it.
     pub fn trace_back(&self, target: &SurfacePoint) -> Result<GeodesicPath, TraceError> {
         let (trail, distance, source) = self.trace(target)?;
-        Ok(self.path_of(&trail, &distance, source))
+        self.path_of(&trail, &distance, source)
     }
 
     /// [`GeodesicField::trace_back`] with the backend's own numbers: where the path crosses an
@@ -134,7 +164,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             })
             .collect();
         Ok(ExactPath {
-            path: self.path_of(&trail, &distance, source),
+            path: self.path_of(&trail, &distance, source)?,
             offsets,
             distance: self.to_model(&distance),
         })
@@ -237,7 +267,13 @@ impl<S: Scalar> GeodesicField<'_, S> {
         })
     }
 
-    fn path_of(&self, trail: &Trail<S>, distance: &S, source: SourceId) -> GeodesicPath {
+    /// The path of a trail in space, checked against the distance ([`TRACE_LENGTH`]).
+    fn path_of(
+        &self,
+        trail: &Trail<S>,
+        distance: &S,
+        source: SourceId,
+    ) -> Result<GeodesicPath, TraceError> {
         // A point the walk found inside an edge is placed from its offset in the edge's frame,
         // not from its fraction `t`, which on a long edge is known only to ulps of the length.
         let points = trail
@@ -251,12 +287,19 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 _ => p.position(self.mesh()),
             })
             .collect();
-        GeodesicPath {
+        let path = GeodesicPath {
             points,
             simplices: trail.points.clone(),
             distance: self.unfolding.to_model(distance.to_f64()),
             source,
+        };
+        if !path.is_as_long_as_its_distance(TRACE_LENGTH) {
+            return Err(TraceError::NotShortest {
+                length: path.length(),
+                distance: path.distance,
+            });
         }
+        Ok(path)
     }
 
     /// The vertex and those at the same place, joined to it by edges of length zero, each
