@@ -101,6 +101,9 @@ impl Scalar for CloneOnly {
     ) -> bool {
         f64::same_distance_function(&raw(a), &raw(b), &scale.0)
     }
+    fn measures_below_float_resolution() -> bool {
+        f64::measures_below_float_resolution()
+    }
     fn bisector(
         a: &SourceDistance<Self>,
         b: &SourceDistance<Self>,

@@ -302,6 +302,11 @@ impl Scalar for Adaptive {
     }
 
     #[inline(always)]
+    fn measures_below_float_resolution() -> bool {
+        false
+    }
+
+    #[inline(always)]
     fn sign(&self) -> Sign {
         sign_of(self.0)
     }

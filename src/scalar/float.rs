@@ -76,6 +76,11 @@ impl Scalar for f64 {
     }
 
     #[inline(always)]
+    fn measures_below_float_resolution() -> bool {
+        false
+    }
+
+    #[inline(always)]
     fn sign(&self) -> Sign {
         if *self > 0.0 {
             Sign::Positive

@@ -246,6 +246,13 @@ pub trait Scalar: Field {
         false
     }
 
+    /// Whether this number type measures edges shorter than `2^-500` of the model's size
+    /// ([`ValidationReport::float_unresolved_edges`](crate::ValidationReport)): their squared
+    /// lengths, and eq. (2)'s coefficients on them, underflow in `f64`, and no one power of two
+    /// brings both them and the model's largest coordinates into `f64`'s range. A number type
+    /// that cannot is refused such a mesh ([`PointError::BeyondFloatRange`](crate::PointError)).
+    fn measures_below_float_resolution() -> bool;
+
     /// Starts a propagation on this thread: a backend with a precision cap takes
     /// `precision_cap` as this thread's (if given), and resets what belongs to one run.
     #[inline(always)]

@@ -473,6 +473,11 @@ impl Scalar for Real {
         self.decide()
     }
 
+    /// Exact rationals measure every length.
+    fn measures_below_float_resolution() -> bool {
+        true
+    }
+
     fn compare(&self, other: &Self) -> Ordering {
         let (a, b) = (self.filter(), other.filter());
         // Values with divisors that may be zero are compared by the sign of their difference,
