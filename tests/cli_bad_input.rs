@@ -89,6 +89,27 @@ fn empty_mesh_files_are_refused_naming_the_file() {
 }
 
 #[test]
+fn meshes_beyond_the_float_range_are_refused_by_the_float_backends() {
+    let path = temp_file("z308.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 1e308\nf 1 2 3\n");
+    let mesh = path.to_str().expect("UTF-8");
+    for backend in ["f64", "adaptive"] {
+        refuses(
+            &["distance", mesh, "--source", "v:0", "--backend", backend],
+            &["shorter than 2^-500", "use the exact backend"],
+        );
+    }
+    let out = stdout(&run(&[
+        "distance",
+        mesh,
+        "--source",
+        "v:0",
+        "--backend",
+        "exact",
+    ]));
+    assert!(out.contains("\n1,1,0\n"), "{out}");
+}
+
+#[test]
 fn generated_meshes_of_absurd_size_are_refused_before_building() {
     for (shape, needle) in [
         (

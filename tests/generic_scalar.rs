@@ -2,7 +2,7 @@
 //! `Clone` (as exact numbers will be) runs the same propagation and gets the same answers.
 
 use exact_geodesics::mesh::shapes;
-use exact_geodesics::scalar::{BisectorRoots, Field, Ring, Scalar, Sign, SourceDistance};
+use exact_geodesics::scalar::{Bisector, Field, Ring, Scalar, Sign, SourceDistance};
 use exact_geodesics::{propagate, PropagateOptions, SurfacePoint, TriMesh, VertexId};
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};
@@ -104,13 +104,21 @@ impl Scalar for CloneOnly {
     fn same_image(a: &SourceDistance<Self>, b: &SourceDistance<Self>, scale: &Self) -> bool {
         f64::same_image(&raw(a), &raw(b), &scale.0)
     }
-    fn bisector_roots(
+    fn measures_below_float_resolution() -> bool {
+        f64::measures_below_float_resolution()
+    }
+    fn bisector(
         a: &SourceDistance<Self>,
         b: &SourceDistance<Self>,
         lo: &Self,
         hi: &Self,
-    ) -> BisectorRoots<Self> {
-        f64::bisector_roots(&raw(a), &raw(b), &lo.0, &hi.0).map(CloneOnly)
+        _known: &[Option<[Self; 2]>; 2],
+    ) -> Bisector<Self> {
+        let b = f64::bisector(&raw(a), &raw(b), &lo.0, &hi.0, &[None, None]);
+        Bisector {
+            roots: b.roots.map(CloneOnly),
+            lower: b.lower,
+        }
     }
 }
 

@@ -64,6 +64,9 @@ mixed_magnitudes! {
     seed_204_heights_from_the_far_edges_own_end: 204, 55, 46;
     // A path 1e-4 from two vertices sent through them: 9e-9 longer than the distance.
     seed_126_paths_pass_beside_vertices: 126, 44, 34;
+    // The corpus's seed 3: a wedge lower by 3e-6 on a range 5e8 long lost it to a tie at the
+    // range's middle, where the distances are 2.5e8; adaptive 1.0 (1.5e-7) long at v6.
+    seed_13911246744053453373_long_ranges_go_to_the_lower_wedge: 13911246744053453373, 79, 6;
 }
 
 /// The shortest path from `from` to `to` on the mixed-magnitude mesh of `seed`, traced in `S`:

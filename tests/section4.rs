@@ -128,6 +128,36 @@ fn range_covered<S: Scalar>() {
     assert_eq!(counts, [1, 0, 0, 0]);
 }
 
+/// The arriving wedge is lower on all of a range 5e8 long, by 3e-6 where the distances are
+/// 1.8e6 (at its start) to 5e8: for `t >= lo`, with `u = t + 99999.999999997`,
+/// `sqrt(u^2 + y^2) <= u + y^2 / (2u)`, so `D_new - D_old <= (400015.404354197 +
+/// 99999.999999997 - 500015.404357504) + 1.437158302^2 / (2 (lo + 1e5)) = -3.31e-6 + 7.4e-7`.
+/// At the range's middle the two distances (2.5e8) differ by 1.3e-14 of themselves, which the
+/// adaptive backend's resolution called a tie: the existing wedge kept the range (a
+/// mixed-magnitude mesh, `tests/mixed_magnitudes.rs` seed 13911246744053453373, where this
+/// left a vertex 1.0 too far at 7e6).
+fn lower_throughout_a_long_range<S: Scalar>() {
+    let (lo, hi) = (1309740.5219807504, 499500000.0);
+    let (result, counts) = intersect(
+        &S::from_f64(5e8),
+        &[wedge::<S>(0, (lo, hi), (0.0, 0.0, 500015.404357504))],
+        &wedge::<S>(
+            1,
+            (lo, hi),
+            (-99999.999999997, 1.437158302, 400015.404354197),
+        ),
+    );
+    let pieces: Vec<_> = result
+        .iter()
+        .map(|w| (w.source.index(), w.b0.to_f64(), w.b1.to_f64()))
+        .collect();
+    assert_eq!(pieces, [(1, lo, hi)]);
+    assert_eq!(
+        [counts.none, counts.one, counts.two, counts.infinite],
+        [1, 0, 0, 0]
+    );
+}
+
 fn all_cases<S: Scalar>() {
     zero_solutions::<S>();
     one_solution::<S>();
@@ -135,6 +165,7 @@ fn all_cases<S: Scalar>() {
     touching_solution::<S>();
     infinitely_many_solutions::<S>();
     range_covered::<S>();
+    lower_throughout_a_long_range::<S>();
 }
 
 #[test]

@@ -82,7 +82,7 @@ impl ValidationReport {
         }
         if !self.float_unresolved_edges.is_empty() {
             out.push(format!(
-                "{} edge(s) shorter than 2^-500 of the model's size, first {}: the f64 and adaptive backends cannot resolve them (use --backend exact)",
+                "{} edge(s) shorter than 2^-500 of the model's size, first {}: the f64 and adaptive backends cannot measure them and refuse the mesh (use --backend exact)",
                 self.float_unresolved_edges.len(),
                 self.float_unresolved_edges[0]
             ));

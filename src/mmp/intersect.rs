@@ -14,7 +14,7 @@ use super::planar::Planar;
 use super::provenance::{Anchor, Provenance};
 use super::stats::{Eq2Counts, Eq2Decision};
 use super::wedge::{PseudoSource, Wedge};
-use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Scalar, SourceDistance};
+use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Lower, Scalar, SourceDistance};
 use std::cmp::Ordering;
 
 /// Who owns a piece of the edge after an intersection: the arriving wedge, or the existing
@@ -56,15 +56,16 @@ fn min_on<S: Scalar>(d: &SourceDistance<S>, lo: &S, hi: &S, at_lo: &S, at_hi: &S
 /// (`mine`) into pieces, each owned by the better wedge [LZT §4]. Coincident distance
 /// functions keep the existing wedge (step 2.3.2). When one wedge is better at every point of
 /// the range by the bounds of convexity, eq. (2) has no root there and is not solved;
-/// otherwise its roots cut the range, and each piece goes to the wedge better at its middle
-/// (pieces on both sides of a touching root, or of a crossing the backend placed where the
-/// distances agree to its resolution, go to the same wedge and merge). The roots' positions
-/// are constructions: rounded from the coefficients of eq. (2), a near-double root moves far
-/// (1.3 units on an edge of 1e8 in a mixed-magnitude mesh), so owners are not inferred by
-/// alternation from one piece, which would hand that whole stretch to the wrong wedge.
+/// otherwise the backend's one decision ([`Scalar::bisector`]) gives the roots that cut the
+/// range and which wedge is lower on each piece (a tie keeps the existing wedge). The engine
+/// asks nothing again at a constructed point: the roots' positions are constructions (a
+/// near-double root rounded from eq. (2)'s coefficients moves far, 1.3 units on an edge of
+/// 1e8 in a mixed-magnitude mesh), and a piece's middle, far along a long range, is where two
+/// distances that differ throughout look like a tie.
 /// `known[0]` (`[1]`) holds both distances at `lo` (`hi`) where a wedge keeps its distance
 /// there ([`Provenance`]: at a vertex of the edge, or at a range end on a shadow line): those,
-/// not values derived again, are compared there, so that a tie the engine built is seen as one.
+/// not values derived again, are the backend's there, so that a tie the engine built is seen as
+/// one.
 /// `lower`: the wedge known to be lower on the whole range ([`lower_by_anchor`]).
 /// Returns the case and whether eq. (2) was solved.
 fn split_shared_range<S: Scalar>(
@@ -83,10 +84,6 @@ fn split_shared_range<S: Scalar>(
         push_piece(pieces, lo, hi, Owner::Old(id));
         return (Eq2Case::Infinite, true);
     }
-    let ties = known.each_ref().map(|v| {
-        v.as_ref()
-            .is_some_and(|[t, m]| t.compare_distance(m) == Ordering::Equal)
-    });
     let [[their_lo, my_lo], [their_hi, my_hi]] = [(&lo, 0), (&hi, 1)].map(|(at, i)| {
         known[i]
             .clone()
@@ -102,25 +99,36 @@ fn split_shared_range<S: Scalar>(
         push_piece(pieces, lo, hi, Owner::New);
         return (Eq2Case::None, false);
     }
-    let roots = S::bisector_roots_given_ties(theirs, mine, &lo, &hi, ties);
-    let case = roots.case();
-    let (first, second) = match roots {
-        BisectorRoots::One(r) | BisectorRoots::Touch(r) => (Some(r), None),
-        BisectorRoots::Two(r, s) => (Some(r), Some(s)),
-        BisectorRoots::None | BisectorRoots::Infinite => (None, None),
-    };
-    let half = S::from_f64(0.5);
+    let bisector = S::bisector(theirs, mine, &lo, &hi, &known);
+    if matches!(bisector.roots, BisectorRoots::Infinite) {
+        push_piece(pieces, lo, hi, Owner::Old(id));
+        return (Eq2Case::Infinite, true);
+    }
+    // The owner of each stretch is the backend's answer; a tie keeps the existing wedge. The
+    // case counted is what the pieces show: how often the owner changes in the range (a
+    // crossing whose two sides both went to one wedge, on a tie, is no crossing), and a
+    // touching root, which is one solution of eq. (1) where the owner does not change.
+    let touching = matches!(bisector.roots, BisectorRoots::Touch(_));
+    let mut changes = 0;
+    let mut previous = None;
     let mut start = lo;
-    for end in [first, second, Some(hi)].into_iter().flatten() {
-        let mid = (start.clone() + &end) * &half;
-        let owner = if mine.at(&mid).compare_distance(&theirs.at(&mid)) == Ordering::Less {
-            Owner::New
-        } else {
-            Owner::Old(id)
+    for (end, lower) in bisector.stretches() {
+        let owner = match lower {
+            Lower::Second => Owner::New,
+            Lower::First | Lower::Neither => Owner::Old(id),
         };
+        changes += usize::from(previous.is_some_and(|p| p != owner));
+        previous = Some(owner);
+        let end = end.unwrap_or_else(|| hi.clone());
         push_piece(pieces, start, end.clone(), owner);
         start = end;
     }
+    let case = match changes {
+        0 if touching => Eq2Case::One,
+        0 => Eq2Case::None,
+        1 => Eq2Case::One,
+        _ => Eq2Case::Two,
+    };
     (case, true)
 }
 

@@ -100,8 +100,10 @@ pub struct Progress {
 /// vertex no face uses, beyond `max_distance`) are at distance `f64::INFINITY`.
 ///
 /// # Errors
-/// [`PointError`] if there is no source, a source or stop point is not a point of the mesh, or
-/// the maximum distance is negative or NaN.
+/// [`PointError`] if there is no source, a source or stop point is not a point of the mesh,
+/// the maximum distance is negative or NaN, or the mesh has edges shorter than `2^-500` of its
+/// size and `S` cannot measure them ([`PointError::BeyondFloatRange`]: `f64` and
+/// [`Adaptive`](crate::scalar::Adaptive); the exact backend can).
 ///
 /// # Example
 /// ```
@@ -184,6 +186,13 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     }
     if let Some(max_distance) = options.max_distance.filter(|d| d.is_nan() || *d < 0.0) {
         return Err(PointError::MaxDistance { max_distance });
+    }
+    let unresolved = &mesh.validation().float_unresolved_edges;
+    if !unresolved.is_empty() && !S::measures_below_float_resolution() {
+        return Err(PointError::BeyondFloatRange {
+            edge: unresolved[0].0,
+            count: unresolved.len(),
+        });
     }
     let sources = sources
         .iter()

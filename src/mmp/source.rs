@@ -92,6 +92,20 @@ pub enum PointError {
         /// The maximum distance given.
         max_distance: f64,
     },
+    /// The mesh has edges shorter than `2^-500` of its size
+    /// ([`ValidationReport::float_unresolved_edges`](crate::ValidationReport)), which the
+    /// backend cannot measure ([`Scalar::measures_below_float_resolution`](crate::Scalar)):
+    /// the `f64` and adaptive backends would put their ends at distance zero from each other.
+    /// The exact backend measures them.
+    #[error(
+        "{count} edge(s) of the mesh, first e{edge}, are shorter than 2^-500 of its largest coordinate: their squared lengths underflow in f64, so the f64 and adaptive backends cannot measure them (use the exact backend)"
+    )]
+    BeyondFloatRange {
+        /// The first such edge.
+        edge: u32,
+        /// How many there are.
+        count: usize,
+    },
 }
 
 impl SurfacePoint {

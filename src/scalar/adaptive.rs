@@ -21,12 +21,14 @@
 //! stored values are exact by themselves and not counted.
 
 use super::audit::{self, Certificate, DecisionCounts};
+use super::bisector::Eq2Terms;
 use super::double_double::DoubleDouble;
 use super::error_bound::ErrorBound;
 use super::float;
 use super::rational::Q;
 use super::roots::{self, CertifiedSign};
-use super::{BisectorRoots, Field, Ring, Scalar, Sign, SourceDistance};
+use super::{Bisector, BisectorRoots, Field, Lower, Ring, Scalar, Sign, SourceDistance};
+use crate::mesh::vector::normalizing_power;
 use std::cell::Cell;
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};
@@ -199,6 +201,99 @@ fn cmp(a: f64, b: f64) -> Ordering {
     a.partial_cmp(&b).unwrap_or(Ordering::Equal)
 }
 
+/// The `f64` positions of the crossings the filtered decision found, from exact values:
+/// eq. (2)'s coefficients and its discriminant `beta^2 G G'` ([`roots::source_gap`]) exact in
+/// rationals, each rounded once, then the cancellation-free formula; a position is then good to
+/// a few ulps of its distance from the range's start, and it is kept inside the range, in
+/// order. The filter's own coefficients carry errors that it bounds for their signs only: on a
+/// near-double root or a nearly vanishing `A` they placed roots far outside the range, and the
+/// lower wedge, certain on each stretch between the exact roots, went to the wrong places.
+fn root_positions(
+    a: &SourceDistance<Adaptive>,
+    b: &SourceDistance<Adaptive>,
+    crossings: roots::Crossings<f64>,
+    [lo, hi]: [f64; 2],
+) -> BisectorRoots<f64> {
+    // In units where the offsets from the range's start are near 1 (a power of two, exact
+    // unless it makes a value subnormal): eq. (2)'s coefficients are of degree up to 4 in
+    // lengths, its discriminant 6, and would leave f64's range.
+    let size = [a, b]
+        .iter()
+        .flat_map(|d| [d.x.0 - lo, d.y.0, d.sigma.0])
+        .fold(hi - lo, |m, v| m.max(v.abs()));
+    let unit = normalizing_power(size);
+    let positions = |u: [f64; 2]| u.map(|u| (lo + u / unit).clamp(lo, hi));
+    // Double-double values first, known to within 2^-60 (of themselves, or absolutely below
+    // 1: the inputs are of unit size here); exact rationals where they are not.
+    let [r, s] = scaled_positions(a, b, &crossings, lo, unit, DoubleDouble::accurate_f64)
+        .unwrap_or_else(|| {
+            scaled_positions(a, b, &crossings, lo, unit, |q: Q| Some(q.to_f64()))
+                .expect("exact rationals give every value")
+        });
+    let [r, s] = positions([r, s]);
+    match crossings {
+        roots::Crossings::None => BisectorRoots::None,
+        roots::Crossings::Infinite => BisectorRoots::Infinite,
+        roots::Crossings::At(_) => BisectorRoots::One(r),
+        roots::Crossings::Touch(_) => BisectorRoots::Touch(r),
+        roots::Crossings::Quadratic {
+            smaller, larger, ..
+        } => match (smaller, larger) {
+            (true, true) => BisectorRoots::Two(r, s),
+            (true, false) => BisectorRoots::One(r),
+            (false, true) => BisectorRoots::One(s),
+            (false, false) => BisectorRoots::None,
+        },
+    }
+}
+
+/// The crossings' offsets from `lo` in units of `1 / unit`, in increasing order (the first
+/// alone for a single root), computed in `T` from the inputs multiplied by `unit`; `None` if
+/// `accurate` cannot give a value to an ulp.
+fn scaled_positions<T: CertifiedSign + Clone>(
+    a: &SourceDistance<Adaptive>,
+    b: &SourceDistance<Adaptive>,
+    crossings: &roots::Crossings<f64>,
+    lo: f64,
+    unit: f64,
+    accurate: fn(T) -> Option<f64>,
+) -> Option<[f64; 2]> {
+    let scaled = |d: &SourceDistance<Adaptive>| SourceDistance {
+        x: T::from_f64(d.x.0 * unit),
+        y: T::from_f64(d.y.0 * unit),
+        sigma: T::from_f64(d.sigma.0 * unit),
+    };
+    let (ta, tb) = (scaled(a), scaled(b));
+    let terms = Eq2Terms::new(&ta, &tb, &T::from_f64(lo * unit));
+    let eq2 = terms.coefficients();
+    let two = T::from_f64(2.0);
+    Some(match crossings {
+        roots::Crossings::None | roots::Crossings::Infinite => [0.0; 2],
+        roots::Crossings::At(_) if terms.beta.certified_sign() == Some(Sign::Zero) => [
+            accurate(-(terms.gamma.clone() / &(two * &terms.alpha)))?,
+            0.0,
+        ],
+        roots::Crossings::At(_) => [accurate(-(eq2.c.clone() / &eq2.b))?, 0.0],
+        roots::Crossings::Touch(_) => [accurate(-(eq2.b.clone() / &(two * &eq2.a)))?, 0.0],
+        roots::Crossings::Quadratic { .. } => {
+            // B^2 - 4AC = beta^2 G G' (the source gaps): no cancellation.
+            let disc = accurate(
+                terms.beta2.clone()
+                    * &roots::source_gap(&ta, &tb, false)
+                    * &roots::source_gap(&ta, &tb, true),
+            )?;
+            let (ca, cb, cc) = (accurate(eq2.a)?, accurate(eq2.b)?, accurate(eq2.c)?);
+            let q = -0.5 * (cb + cb.signum() * disc.max(0.0).sqrt());
+            let (r, s) = if q == 0.0 {
+                (0.0, 0.0)
+            } else {
+                (q / ca, cc / q)
+            };
+            [r.min(s), r.max(s)]
+        }
+    })
+}
+
 impl Scalar for Adaptive {
     super::keeps_no_values!();
 
@@ -210,6 +305,11 @@ impl Scalar for Adaptive {
     #[inline(always)]
     fn frames_from_nearer_end() -> bool {
         true
+    }
+
+    #[inline(always)]
+    fn measures_below_float_resolution() -> bool {
+        false
     }
 
     #[inline(always)]
@@ -271,12 +371,21 @@ impl Scalar for Adaptive {
             && (a.y.0.abs() - b.y.0.abs()).abs() <= same
     }
 
-    fn bisector_roots(
+    /// The crossings by exact signs of polynomials in the `f64` inputs ([`roots::crossings`]),
+    /// placed from exact values ([`root_positions`]); on each stretch between them, the lower
+    /// wedge by the sign of `D_a(t) - D_b(t)` at the stretch's middle or at an end of the range
+    /// ([`float::lower_on`]), taken where the two differ by more than
+    /// [`Resolution::DISTANCE`]: each distance is evaluated to within `4 eps` of itself, so
+    /// that sign is certain. Closer than that everywhere asked is a tie (the existing wedge
+    /// keeps the stretch): the sigmas are constructions, and a wedge better by less would only
+    /// replace its neighbour by a copy of itself.
+    fn bisector(
         a: &SourceDistance<Self>,
         b: &SourceDistance<Self>,
         lo: &Self,
         hi: &Self,
-    ) -> BisectorRoots<Self> {
+        _known: &[Option<[Self; 2]>; 2],
+    ) -> Bisector<Self> {
         let signs = Signs {
             a,
             b,
@@ -300,7 +409,27 @@ impl Scalar for Adaptive {
                     .map(|c| c.map(|x| x.to_f64()))
             },
         );
-        roots::into_f64_roots(crossings, lo.0).map(Adaptive)
+        let roots = root_positions(a, b, crossings, [lo.0, hi.0]);
+        let (fa, fb) = (lift::<f64>(a), lift::<f64>(b));
+        let cuts = match roots {
+            BisectorRoots::One(r) | BisectorRoots::Touch(r) => [Some(r), None],
+            BisectorRoots::Two(r, s) => [Some(r), Some(s)],
+            BisectorRoots::None | BisectorRoots::Infinite => [None, None],
+        };
+        let mut lower = [Lower::Neither; 3];
+        if roots != BisectorRoots::Infinite {
+            let mut start = lo.0;
+            let ends = cuts.into_iter().flatten().chain([hi.0]);
+            for (i, end) in ends.enumerate() {
+                let range = [lo.0, hi.0];
+                lower[i] = float::lower_on(&fa, &fb, [start, end], range, Resolution::DISTANCE);
+                start = end;
+            }
+        }
+        Bisector {
+            roots: roots.map(Adaptive),
+            lower,
+        }
     }
 
     #[inline]

@@ -138,6 +138,84 @@ impl<S> BisectorRoots<S> {
     }
 }
 
+/// Which of two distance functions is lower on a stretch of their shared range.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Lower {
+    /// The first function (the wedge already on the edge, in the engine).
+    First,
+    /// The second function (the arriving wedge).
+    Second,
+    /// Neither: they are equal there, or the backend cannot tell them apart.
+    Neither,
+}
+
+impl Lower {
+    /// Which function is lower where `first - second` has sign `sign`.
+    pub fn of_difference(sign: super::Sign) -> Lower {
+        match sign {
+            super::Sign::Negative => Lower::First,
+            super::Sign::Zero => Lower::Neither,
+            super::Sign::Positive => Lower::Second,
+        }
+    }
+
+    /// The other function: the lower one beyond a crossing.
+    pub fn flipped(self) -> Lower {
+        match self {
+            Lower::First => Lower::Second,
+            Lower::Second => Lower::First,
+            Lower::Neither => Lower::Neither,
+        }
+    }
+}
+
+/// The meeting of two wedges on their shared range [LZT §2-§4]: the solutions of eq. (1)
+/// inside it ([`BisectorRoots`]) and which wedge is lower on each stretch between them, both
+/// from one decision of the backend.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bisector<S> {
+    /// The solutions of eq. (1) strictly inside the range.
+    pub roots: BisectorRoots<S>,
+    /// Which function is lower on each stretch the roots cut the range into, from its start:
+    /// one entry per stretch (one for `None` and `Infinite`, two for `One` and `Touch`, three
+    /// for `Two`), the others `Neither`.
+    pub lower: [Lower; 3],
+}
+
+impl<S> Bisector<S> {
+    /// Roots and owners from the lower function on the first stretch: it changes at every
+    /// crossing and not at a touching root (the certified backends, whose roots are exact in
+    /// their sign structure).
+    pub fn alternating(roots: BisectorRoots<S>, first: Lower) -> Self {
+        let lower = match roots {
+            BisectorRoots::One(_) => [first, first.flipped(), Lower::Neither],
+            BisectorRoots::Touch(_) => [first, first, Lower::Neither],
+            BisectorRoots::Two(..) => [first, first.flipped(), first],
+            BisectorRoots::Infinite => [Lower::Neither; 3],
+            BisectorRoots::None => [first, Lower::Neither, Lower::Neither],
+        };
+        Bisector { roots, lower }
+    }
+
+    /// The stretches: each one's end (a root, or `None` for the range's end) and which function
+    /// is lower on it.
+    pub fn stretches(self) -> impl Iterator<Item = (Option<S>, Lower)> {
+        let lower = self.lower;
+        let ends: [Option<S>; 2] = match self.roots {
+            BisectorRoots::One(r) | BisectorRoots::Touch(r) => [Some(r), None],
+            BisectorRoots::Two(r, s) => [Some(r), Some(s)],
+            BisectorRoots::None | BisectorRoots::Infinite => [None, None],
+        };
+        let count = ends.iter().flatten().count();
+        ends.into_iter()
+            .flatten()
+            .map(Some)
+            .chain(std::iter::once(None))
+            .zip(lower)
+            .take(count + 1)
+    }
+}
+
 /// The number of solutions of eq. (2) in a shared range, without the solutions themselves.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
 #[serde(rename_all = "lowercase")]

@@ -75,6 +75,15 @@ impl DoubleDouble {
         self.hi + self.lo
     }
 
+    /// The nearest `f64` if the value is known to within `2^-60` of itself or, for values
+    /// below 1, to within `2^-60` (for values of unit size, as the adaptive backend's root
+    /// positions are computed), else `None`.
+    #[inline(always)]
+    pub(crate) fn accurate_f64(self) -> Option<f64> {
+        let value = self.hi + self.lo;
+        (self.error <= value.abs().max(1.0) * (1.0 / (1u64 << 60) as f64)).then_some(value)
+    }
+
     #[inline(always)]
     fn magnitude(&self) -> f64 {
         self.hi.abs() + self.lo.abs()

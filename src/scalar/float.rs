@@ -4,7 +4,9 @@
 //! contains no epsilon. All tolerances are relative to a length of the edge at hand, so results
 //! do not depend on the scale of the model (compare Observation 3 [LZT §6]).
 
-use super::{BisectorRoots, Eq2Coefficients, Field, Ring, Scalar, Sign, SourceDistance};
+use super::{
+    Bisector, BisectorRoots, Eq2Coefficients, Field, Lower, Ring, Scalar, Sign, SourceDistance,
+};
 use std::cmp::Ordering;
 
 /// The f64 backend's tolerance policy, one constant per kind of decision.
@@ -74,6 +76,11 @@ impl Scalar for f64 {
     }
 
     #[inline(always)]
+    fn measures_below_float_resolution() -> bool {
+        false
+    }
+
+    #[inline(always)]
     fn sign(&self) -> Sign {
         if *self > 0.0 {
             Sign::Positive
@@ -123,61 +130,130 @@ impl Scalar for f64 {
         f64::same_distance_function(a, b, scale)
     }
 
-    fn bisector_roots(
+    /// The roots by [`roots_in`]; on each stretch between them, the lower function where the
+    /// difference is clearest ([`lower_on`]): the roots' positions are rounded, and near a
+    /// near-double root they move far, so owners are not inferred by alternation.
+    fn bisector(
         a: &SourceDistance<f64>,
         b: &SourceDistance<f64>,
         lo: &f64,
         hi: &f64,
-    ) -> BisectorRoots<f64> {
-        let (lo, hi) = (*lo, *hi);
-        if f64::same_distance_function(a, b, &(hi - lo)) {
-            return BisectorRoots::Infinite;
-        }
-        let scale = (hi - lo)
-            .max(a.y.abs())
-            .max(b.y.abs())
-            .max((a.x - lo).abs())
-            .max((b.x - lo).abs());
-        let f = |t: f64| a.at(&t) - b.at(&t);
-        let solves_eq1 =
-            |t: f64| f(t).abs() <= FloatTolerance::ROOT_RESIDUAL * a.at(&t).max(b.at(&t));
-        let eq2 = Eq2Coefficients::new(a, b, &lo);
-        let (candidates, count, double) = quadratic_roots(eq2.a, eq2.b, eq2.c, hi - lo);
-        let mut roots = [0.0; 2];
-        let mut found = 0;
-        let mut touching = double;
-        for &t in &candidates[..count] {
-            let t = t + lo;
-            if t <= lo || t >= hi || !solves_eq1(t) {
-                continue;
+        _known: &[Option<[f64; 2]>; 2],
+    ) -> Bisector<f64> {
+        let roots = roots_in(a, b, *lo, *hi);
+        let mut lower = [Lower::Neither; 3];
+        if roots != BisectorRoots::Infinite {
+            let cuts = match roots {
+                BisectorRoots::One(r) | BisectorRoots::Touch(r) => vec![r],
+                BisectorRoots::Two(r, s) => vec![r, s],
+                _ => vec![],
+            };
+            let mut start = *lo;
+            for (i, end) in cuts.iter().copied().chain([*hi]).enumerate() {
+                lower[i] = lower_on(a, b, [start, end], [*lo, *hi], FloatTolerance::DISTANCE);
+                start = end;
             }
-            if found > 0 && t - roots[found - 1] <= FloatTolerance::EXTENT * scale {
-                // Two roots closer than the resolution: a touching point, or a crossing beside
-                // a root of eq. (2) that eq. (1) only nearly solves; the ends tell below.
-                touching = true;
-                continue;
-            }
-            roots[found] = t;
-            found += 1;
         }
-        // Eq. (2) is ill-conditioned when the pseudo-sources nearly coincide; a sign change of
-        // eq. (1) across the range proves a crossing, so find it directly if eq. (2) missed it.
-        let (f_lo, f_hi) = (f(lo), f(hi));
-        if found % 2 == 0 && f_lo * f_hi < 0.0 {
-            roots[0] = bisect(f, lo, hi, f_lo);
-            found = 1;
+        Bisector { roots, lower }
+    }
+}
+
+/// Which of `a`, `b` is lower on the stretch `[start, end]` of the range `[lo, hi]`: at its
+/// middle, as [`Scalar::compare_distance`] decides (a tie: closer than `relative_tie`, for f64
+/// [`FloatTolerance::DISTANCE`]);
+/// if that is a tie, at whichever of its ends that are the range's ends (not rounded roots,
+/// where the two are equal) the difference is clearest. The middle of a long stretch lies
+/// where both distances are large and their tie wide: on a range 5e8 long whose distances
+/// differ by 3e-6 throughout, the middle saw a tie and kept the worse wedge, and the wedges it
+/// sent on lost 1.0 of a distance of 7e6 (mixed magnitudes, issue 10). `Neither` if every
+/// point asked is a tie.
+pub(crate) fn lower_on(
+    a: &SourceDistance<f64>,
+    b: &SourceDistance<f64>,
+    [start, end]: [f64; 2],
+    [lo, hi]: [f64; 2],
+    relative_tie: f64,
+) -> Lower {
+    let clearness = |t: f64| {
+        let (da, db) = (a.at(&t), b.at(&t));
+        let tie = relative_tie * da.abs().max(db.abs());
+        let lower = if da < db { Lower::First } else { Lower::Second };
+        ((da - db).abs() / tie, lower)
+    };
+    let mid = clearness(0.5 * (start + end));
+    if mid.0 > 1.0 {
+        return mid.1;
+    }
+    let ends = [(start == lo).then_some(lo), (end == hi).then_some(hi)];
+    let (clearest, lower) =
+        ends.into_iter()
+            .flatten()
+            .map(clearness)
+            .fold(
+                (1.0, Lower::Neither),
+                |best, c| if c.0 > best.0 { c } else { best },
+            );
+    if clearest > 1.0 {
+        lower
+    } else {
+        Lower::Neither
+    }
+}
+
+/// The roots of eq. (2) that solve eq. (1) strictly inside `(lo, hi)`, as
+/// [`Scalar::bisector_roots`].
+fn roots_in(
+    a: &SourceDistance<f64>,
+    b: &SourceDistance<f64>,
+    lo: f64,
+    hi: f64,
+) -> BisectorRoots<f64> {
+    if f64::same_distance_function(a, b, &(hi - lo)) {
+        return BisectorRoots::Infinite;
+    }
+    let scale = (hi - lo)
+        .max(a.y.abs())
+        .max(b.y.abs())
+        .max((a.x - lo).abs())
+        .max((b.x - lo).abs());
+    let f = |t: f64| a.at(&t) - b.at(&t);
+    let solves_eq1 = |t: f64| f(t).abs() <= FloatTolerance::ROOT_RESIDUAL * a.at(&t).max(b.at(&t));
+    let eq2 = Eq2Coefficients::new(a, b, &lo);
+    let (candidates, count, double) = quadratic_roots(eq2.a, eq2.b, eq2.c, hi - lo);
+    let mut roots = [0.0; 2];
+    let mut found = 0;
+    let mut touching = double;
+    for &t in &candidates[..count] {
+        let t = t + lo;
+        if t <= lo || t >= hi || !solves_eq1(t) {
+            continue;
         }
-        // A single root is a touching point only if eq. (1) keeps its sign across the range
-        // (with equal sigmas, eq. (2) is the square of a line's equation: a double root that
-        // crosses). Which wedge is lower on each piece is the engine's to ask.
-        touching = touching && f_lo * f_hi > 0.0;
-        match roots[..found] {
-            [] => BisectorRoots::None,
-            [r] if touching => BisectorRoots::Touch(r),
-            [r] => BisectorRoots::One(r),
-            [r, s] => BisectorRoots::Two(r, s),
-            _ => unreachable!("a quadratic has at most two roots"),
+        if found > 0 && t - roots[found - 1] <= FloatTolerance::EXTENT * scale {
+            // Two roots closer than the resolution: a touching point, or a crossing beside
+            // a root of eq. (2) that eq. (1) only nearly solves; the ends tell below.
+            touching = true;
+            continue;
         }
+        roots[found] = t;
+        found += 1;
+    }
+    // Eq. (2) is ill-conditioned when the pseudo-sources nearly coincide; a sign change of
+    // eq. (1) across the range proves a crossing, so find it directly if eq. (2) missed it.
+    let (f_lo, f_hi) = (f(lo), f(hi));
+    if found % 2 == 0 && f_lo * f_hi < 0.0 {
+        roots[0] = bisect(f, lo, hi, f_lo);
+        found = 1;
+    }
+    // A single root is a touching point only if eq. (1) keeps its sign across the range
+    // (with equal sigmas, eq. (2) is the square of a line's equation: a double root that
+    // crosses). Which wedge is lower on each piece is the engine's to ask.
+    touching = touching && f_lo * f_hi > 0.0;
+    match roots[..found] {
+        [] => BisectorRoots::None,
+        [r] if touching => BisectorRoots::Touch(r),
+        [r] => BisectorRoots::One(r),
+        [r, s] => BisectorRoots::Two(r, s),
+        _ => unreachable!("a quadratic has at most two roots"),
     }
 }
 

@@ -61,7 +61,7 @@ mod roots;
 pub use adaptive::{Adaptive, Resolution};
 pub use audit::{Certificate, DecisionCounts, DecisionSite, Site, Uncertainty, ZeroProof};
 pub use backend::Backend;
-pub use bisector::{BisectorRoots, Eq2Case, Eq2Coefficients, SourceDistance};
+pub use bisector::{Bisector, BisectorRoots, Eq2Case, Eq2Coefficients, Lower, SourceDistance};
 pub use exact::Real;
 pub use interval::Interval;
 
@@ -201,27 +201,30 @@ pub trait Scalar: Field {
     fn same_image(a: &SourceDistance<Self>, b: &SourceDistance<Self>, scale: &Self) -> bool;
 
     /// Roots of eq. (2) [LZT §2] that solve eq. (1), strictly inside `(lo, hi)`, in increasing
-    /// order; by Property 1 there are none, one, two or infinitely many.
+    /// order; by Property 1 there are none, one, two or infinitely many. The roots of
+    /// [`Scalar::bisector`] without the ends' values.
     fn bisector_roots(
         a: &SourceDistance<Self>,
         b: &SourceDistance<Self>,
         lo: &Self,
         hi: &Self,
-    ) -> BisectorRoots<Self>;
+    ) -> BisectorRoots<Self> {
+        Self::bisector(a, b, lo, hi, &[None, None]).roots
+    }
 
-    /// [`Scalar::bisector_roots`] when the engine knows that the two distance functions are
-    /// equal at `lo` (`ties[0]`) or at `hi` (`ties[1]`), where eq. (2) then has a root: a
-    /// backend that proves such equalities by structure ([`Scalar::Kept`]) uses the knowledge
-    /// rather than decide it again. The default ignores it.
-    fn bisector_roots_given_ties(
+    /// The meeting of two wedges on their shared range `[lo, hi]` [LZT §4]: the roots of eq. (2)
+    /// that solve eq. (1) inside it, and which of `a`, `b` is lower on each stretch between
+    /// them, in one decision (the engine gives each piece to the lower wedge and asks nothing
+    /// again). `known[0]` (`[1]`) holds `[a, b]` at `lo` (`hi`) where the engine keeps those
+    /// values ([`Scalar::Kept`]): a backend that proves equalities by structure uses them rather
+    /// than decide the ends again (where they are equal, eq. (2) has a root at that end).
+    fn bisector(
         a: &SourceDistance<Self>,
         b: &SourceDistance<Self>,
         lo: &Self,
         hi: &Self,
-        _ties: [bool; 2],
-    ) -> BisectorRoots<Self> {
-        Self::bisector_roots(a, b, lo, hi)
-    }
+        known: &[Option<[Self; 2]>; 2],
+    ) -> Bisector<Self>;
 
     /// The orientation of the triangle `(p, q, r)`: the sign of `(q - p) x (r - p)`, positive
     /// when `r` lies to the left of the line from `p` to `q`.
@@ -250,6 +253,13 @@ pub trait Scalar: Field {
     fn frames_from_nearer_end() -> bool {
         false
     }
+
+    /// Whether this number type measures edges shorter than `2^-500` of the model's size
+    /// ([`ValidationReport::float_unresolved_edges`](crate::ValidationReport)): their squared
+    /// lengths, and eq. (2)'s coefficients on them, underflow in `f64`, and no one power of two
+    /// brings both them and the model's largest coordinates into `f64`'s range. A number type
+    /// that cannot is refused such a mesh ([`PointError::BeyondFloatRange`](crate::PointError)).
+    fn measures_below_float_resolution() -> bool;
 
     /// Starts a propagation on this thread: a backend with a precision cap takes
     /// `precision_cap` as this thread's (if given), and resets what belongs to one run.

@@ -420,10 +420,119 @@ pub(crate) fn crossings<T: CertifiedSign>(
     })
 }
 
+impl<T> Crossings<T> {
+    /// How many times the lower function changes inside the range.
+    pub(crate) fn changes(&self) -> usize {
+        match self {
+            Crossings::None | Crossings::Infinite | Crossings::Touch(_) => 0,
+            Crossings::At(_) => 1,
+            Crossings::Quadratic {
+                smaller, larger, ..
+            } => usize::from(*smaller) + usize::from(*larger),
+        }
+    }
+}
+
+/// The sign of `D_a(p) - D_b(p)` (eq. (1)'s two sides at `p`) as signs of polynomials in the
+/// inputs, with positions from `p`: with `beta = sigma_b - sigma_a` and `n_a`, `n_b` the squared
+/// distances from the pseudo-sources, `D_a - D_b = sqrt(n_a) - (sqrt(n_b) + beta)`; squaring
+/// gives `L = n_a - n_b - beta^2` (eq. (2)'s `gamma` from `p`) against `2 beta sqrt(n_b)`, and
+/// squaring again eq. (2)'s `P(p)` (`at_p`: its sign decided apart, asked if `sign` cannot
+/// tell). `sign` is the number
+/// type's sign ([`CertifiedSign::certified_sign`] or [`CertifiedSign::clear_sign`]).
+fn difference_sign<T: CertifiedSign>(
+    a: &SourceDistance<T>,
+    b: &SourceDistance<T>,
+    p: &T,
+    at_p: impl FnOnce() -> Option<Sign>,
+    sign: impl Fn(&T) -> Option<Sign>,
+) -> Option<Sign> {
+    let terms = Eq2Terms::new(a, b, p);
+    let xa = a.x.clone() - p;
+    let n_a = xa.clone() * &xa + &(a.y.clone() * &a.y);
+    let s_beta = sign(&terms.beta)?;
+    let s_nb = sign(&terms.n2)?;
+    // The sign of sqrt(n_b) + beta.
+    let s_right = match s_beta {
+        Sign::Negative => sign(&(terms.n2.clone() - &terms.beta2))?,
+        Sign::Zero if s_nb == Sign::Zero => Sign::Zero,
+        _ => Sign::Positive,
+    };
+    match s_right {
+        Sign::Negative => return Some(Sign::Positive),
+        Sign::Zero => return sign(&n_a),
+        Sign::Positive => {}
+    }
+    // sign(L - 2 beta sqrt(n_b)), both sides' signs first.
+    let s_l = sign(&terms.gamma)?;
+    if s_beta == Sign::Zero || s_nb == Sign::Zero {
+        return Some(s_l);
+    }
+    Some(match s_l {
+        Sign::Zero => negate(s_beta),
+        s if s != s_beta => s,
+        s => {
+            let s_p = match sign(&terms.constant()) {
+                Some(s_p) => s_p,
+                None => at_p()?,
+            };
+            s_p.times(s)
+        }
+    })
+}
+
+/// The sign of `D_a - D_b` on the first stretch of `(lo, hi)` (from `lo` to the first
+/// solution of eq. (1), or the whole range), given how many times it `changes` inside:
+/// the sign at `lo`, else at `hi` (times `(-1)^changes`), else, with no solution inside and
+/// the functions equal at both ends, at the middle. By Property 1 [LZT §3] the functions meet
+/// at most twice unless they coincide, so an end where they are equal leaves the other end
+/// nonzero when they cross inside. `known[i]`: the sign at that end, if known apart (the
+/// engine's kept values); `signs` decides eq. (2)'s `P` at the ends apart. `None` when the
+/// number type cannot tell.
+pub(crate) fn first_stretch_sign<T: CertifiedSign>(
+    (a, b): (&SourceDistance<T>, &SourceDistance<T>),
+    [lo, hi]: [&T; 2],
+    changes: usize,
+    signs: &impl InputSigns,
+    known: [Option<Sign>; 2],
+    sign: impl Fn(&T) -> Option<Sign>,
+) -> Option<Sign> {
+    // Both ends by the number type's own signs first, then with eq. (2)'s `P` there decided
+    // apart: a range often starts where the two functions tie, and `P` is then near zero.
+    let mut undecided = false;
+    for apart in [false, true] {
+        undecided = false;
+        for (i, end) in [lo, hi].into_iter().enumerate() {
+            let at_end = known[i].or_else(|| {
+                let at_p = || if apart { signs.at_end(i == 1) } else { None };
+                difference_sign(a, b, end, at_p, &sign)
+            });
+            match at_end {
+                None => undecided = true,
+                Some(Sign::Zero) => {}
+                Some(s) if i == 1 && changes % 2 == 1 => return Some(negate(s)),
+                Some(s) => return Some(s),
+            }
+        }
+        if !undecided {
+            break;
+        }
+    }
+    if undecided {
+        return None;
+    }
+    if changes > 0 {
+        // Equal at both ends and crossing inside: not possible by Property 1.
+        return Some(Sign::Zero);
+    }
+    let mid = (lo.clone() + hi) * &T::from_f64(0.5);
+    difference_sign(a, b, &mid, || None, &sign)
+}
+
 /// The roots of eq. (2) in increasing order, for two distinct real roots, in a [`Field`]:
 /// `(-B -+ sqrt(D)) / 2A`, ordered by the sign of `A`. The exact backend wants this shape (one
 /// square root over the coefficients, which its normal form handles); `f64` wants the
-/// cancellation-free one of [`stable_roots`].
+/// cancellation-free one from exact coefficients (the adaptive backend's `root_positions`).
 pub(crate) fn quadratic_roots<S: Field>(eq2: &Eq2Coefficients<S>, sign_a: Sign) -> [S; 2] {
     let two = S::from_f64(2.0);
     let disc = eq2.b.clone() * &eq2.b - two.clone() * &two * &eq2.a * &eq2.c;
@@ -438,15 +547,6 @@ pub(crate) fn quadratic_roots<S: Field>(eq2: &Eq2Coefficients<S>, sign_a: Sign) 
     }
 }
 
-/// The roots of eq. (2) in increasing order in `f64`, without cancellation:
-/// `q = -(B + sign(B) sqrt(D)) / 2`, and the roots `q / A` and `C / q`.
-pub(crate) fn stable_roots(eq2: &Eq2Coefficients<f64>) -> [f64; 2] {
-    let (a, b, c) = (eq2.a, eq2.b, eq2.c);
-    let q = -0.5 * (b + b.signum() * (b * b - 4.0 * a * c).max(0.0).sqrt());
-    let (r, s) = if q == 0.0 { (0.0, 0.0) } else { (q / a, c / q) };
-    [r.min(s), r.max(s)]
-}
-
 /// Which of the two roots are solutions, as [`BisectorRoots`] back on the edge.
 fn chosen<S: Field>([r, s]: [S; 2], smaller: bool, larger: bool, lo: &S) -> BisectorRoots<S> {
     match (smaller, larger) {
@@ -454,19 +554,6 @@ fn chosen<S: Field>([r, s]: [S; 2], smaller: bool, larger: bool, lo: &S) -> Bise
         (true, false) => BisectorRoots::One(r + lo),
         (false, true) => BisectorRoots::One(s + lo),
         (false, false) => BisectorRoots::None,
-    }
-}
-
-/// [`into_roots`] for `f64`, with the roots of [`stable_roots`].
-pub(crate) fn into_f64_roots(c: Crossings<f64>, lo: f64) -> BisectorRoots<f64> {
-    match c {
-        Crossings::Quadratic {
-            eq2,
-            smaller,
-            larger,
-            ..
-        } => chosen(stable_roots(&eq2), smaller, larger, &lo),
-        other => into_roots(other, &lo),
     }
 }
 

@@ -39,7 +39,7 @@ pub use super::bignum::{Integer, Rational};
 use super::audit::{self, DecisionCounts, Site};
 use super::bignum::{Float, Round};
 use super::roots::{self, CertifiedSign};
-use super::{BisectorRoots, Field, Interval, Ring, Scalar, Sign, SourceDistance};
+use super::{Bisector, BisectorRoots, Field, Interval, Lower, Ring, Scalar, Sign, SourceDistance};
 use node::{DivisorCheck, Node, Op};
 use std::cell::Cell;
 use std::cmp::Ordering;
@@ -504,6 +504,11 @@ impl Scalar for Real {
         self.decide()
     }
 
+    /// Exact rationals measure every length.
+    fn measures_below_float_resolution() -> bool {
+        true
+    }
+
     fn compare(&self, other: &Self) -> Ordering {
         let (a, b) = (self.filter(), other.filter());
         // Values with divisors that may be zero are compared by the sign of their difference,
@@ -546,25 +551,43 @@ impl Scalar for Real {
         Self::same_distance_function(a, b, scale)
     }
 
-    fn bisector_roots(
+    /// The crossings by exact signs ([`roots::crossings`]), with the ends' kept values where the
+    /// engine has them (a tie there is then known by structure, not decided again); the lower
+    /// wedge on the first stretch by the sign of `a - b` at an end where it is clear
+    /// ([`roots::first_stretch_sign`]), else at the first stretch's middle; the owners then
+    /// alternate at the crossings.
+    fn bisector(
         a: &SourceDistance<Self>,
         b: &SourceDistance<Self>,
         lo: &Self,
         hi: &Self,
-    ) -> BisectorRoots<Self> {
-        Real::bisector_roots_given_ties(a, b, lo, hi, [false; 2])
-    }
-
-    fn bisector_roots_given_ties(
-        a: &SourceDistance<Self>,
-        b: &SourceDistance<Self>,
-        lo: &Self,
-        hi: &Self,
-        ties: [bool; 2],
-    ) -> BisectorRoots<Self> {
+        known: &[Option<[Self; 2]>; 2],
+    ) -> Bisector<Self> {
+        let known = known
+            .each_ref()
+            .map(|v| v.as_ref().map(|[t, m]| (t.clone() - m).decide()));
+        let ties = known.map(|s| s == Some(Sign::Zero));
         let crossings = roots::crossings(a, b, lo, hi, &roots::InT, ties)
             .expect("the exact backend decides every sign");
-        roots::into_roots(crossings, lo)
+        let changes = crossings.changes();
+        let first = roots::first_stretch_sign(
+            (a, b),
+            [lo, hi],
+            changes,
+            &roots::InT,
+            known,
+            <Real as CertifiedSign>::clear_sign,
+        );
+        let roots = roots::into_roots(crossings, lo);
+        let first = first.unwrap_or_else(|| {
+            let end = match &roots {
+                BisectorRoots::One(r) | BisectorRoots::Touch(r) | BisectorRoots::Two(r, _) => r,
+                _ => hi,
+            };
+            let mid = (lo.clone() + end) * &Real::from_f64(0.5);
+            (a.at(&mid) - &b.at(&mid)).decide()
+        });
+        Bisector::alternating(roots, Lower::of_difference(first))
     }
 
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign {
