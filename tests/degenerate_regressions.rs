@@ -4,30 +4,9 @@
 
 mod common;
 
-use common::edge_graph_dijkstra;
+use common::{distances, edge_graph_dijkstra, every_backend};
 use exact_geodesics::scalar::{Adaptive, Real};
-use exact_geodesics::{
-    propagate, PointError, PropagateOptions, Scalar, SurfacePoint, TriMesh, VertexId,
-};
-
-fn distances<S: Scalar>(mesh: &TriMesh, source: u32) -> Vec<f64> {
-    propagate::<S>(
-        mesh,
-        &[SurfacePoint::Vertex(VertexId(source))],
-        &PropagateOptions::default(),
-    )
-    .expect("valid source")
-    .vertex_distances()
-}
-
-/// The distances from `source` in all three backends, labelled.
-fn every_backend(mesh: &TriMesh, source: u32) -> [(&'static str, Vec<f64>); 3] {
-    [
-        ("f64", distances::<f64>(mesh, source)),
-        ("adaptive", distances::<Adaptive>(mesh, source)),
-        ("exact", distances::<Real>(mesh, source)),
-    ]
-}
+use exact_geodesics::{propagate, PointError, PropagateOptions, SurfacePoint, TriMesh, VertexId};
 
 fn straight(mesh: &TriMesh, a: u32, b: u32) -> f64 {
     let (p, q) = (mesh.position(VertexId(a)), mesh.position(VertexId(b)));

@@ -4,30 +4,14 @@
 //! values come from the coordinates (closed forms of the unfolded surface), never from the
 //! engine.
 
+mod common;
+
+use common::{distances, every_backend};
 use exact_geodesics::glam::DVec3;
 use exact_geodesics::scalar::{Adaptive, Real};
 use exact_geodesics::{
     propagate, PropagateOptions, Scalar, SurfacePoint, TraceError, TriMesh, VertexId,
 };
-
-fn distances<S: Scalar>(mesh: &TriMesh, source: u32) -> Vec<f64> {
-    propagate::<S>(
-        mesh,
-        &[SurfacePoint::Vertex(VertexId(source))],
-        &PropagateOptions::default(),
-    )
-    .expect("valid source")
-    .vertex_distances()
-}
-
-/// The distances from `source` in all three backends, labelled.
-fn every_backend(mesh: &TriMesh, source: u32) -> [(&'static str, Vec<f64>); 3] {
-    [
-        ("f64", distances::<f64>(mesh, source)),
-        ("adaptive", distances::<Adaptive>(mesh, source)),
-        ("exact", distances::<Real>(mesh, source)),
-    ]
-}
 
 /// A sliver folded back onto its flat neighbour. Apex `v0` at height 1 over the line through
 /// `v4`, `v5` (the origin) and `v1`, along `(0.8, -0.6)` rotated in floats (so the sliver

@@ -7,7 +7,10 @@ pub mod cli;
 pub mod strategies;
 
 use exact_geodesics::mesh::shapes::SplitMix64;
-use exact_geodesics::{FaceId, SurfacePoint, TriMesh, VertexId};
+use exact_geodesics::scalar::{Adaptive, Real};
+use exact_geodesics::{
+    propagate, FaceId, PropagateOptions, Scalar, SurfacePoint, TriMesh, VertexId,
+};
 use std::collections::BinaryHeap;
 
 #[derive(PartialEq)]
@@ -269,4 +272,24 @@ pub fn two_triangles() -> TriMesh {
         vec![[0, 1, 2], [3, 4, 5]],
     )
     .expect("a usable mesh")
+}
+
+/// The vertex distances from the vertex `source` in the backend `S`.
+pub fn distances<S: Scalar>(mesh: &TriMesh, source: u32) -> Vec<f64> {
+    propagate::<S>(
+        mesh,
+        &[SurfacePoint::Vertex(VertexId(source))],
+        &PropagateOptions::default(),
+    )
+    .expect("valid source")
+    .vertex_distances()
+}
+
+/// The distances from `source` in all three backends, labelled.
+pub fn every_backend(mesh: &TriMesh, source: u32) -> [(&'static str, Vec<f64>); 3] {
+    [
+        ("f64", distances::<f64>(mesh, source)),
+        ("adaptive", distances::<Adaptive>(mesh, source)),
+        ("exact", distances::<Real>(mesh, source)),
+    ]
 }
