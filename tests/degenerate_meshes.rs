@@ -1,17 +1,13 @@
 //! Hand-made degenerate meshes: the engine returns documented results, never panics or hangs.
 
+mod common;
+
 use exact_geodesics::glam::DVec3;
 use exact_geodesics::mesh::shapes;
 use exact_geodesics::{propagate, PropagateOptions, SurfacePoint, TraceError, TriMesh, VertexId};
 
 fn from_vertex(mesh: &TriMesh, v: u32) -> Vec<f64> {
-    propagate::<f64>(
-        mesh,
-        &[SurfacePoint::Vertex(VertexId(v))],
-        &PropagateOptions::default(),
-    )
-    .expect("valid source")
-    .vertex_distances()
+    common::distances::<f64>(mesh, v)
 }
 
 #[test]

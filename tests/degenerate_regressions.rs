@@ -4,19 +4,9 @@
 
 mod common;
 
-use common::{distances, edge_graph_dijkstra, every_backend};
+use common::{distances, edge_graph_dijkstra, every_backend, straight};
 use exact_geodesics::scalar::{Adaptive, Real};
 use exact_geodesics::{propagate, PointError, PropagateOptions, SurfacePoint, TriMesh, VertexId};
-
-fn straight(mesh: &TriMesh, a: u32, b: u32) -> f64 {
-    let (p, q) = (mesh.position(VertexId(a)), mesh.position(VertexId(b)));
-    let d = [0, 1, 2].map(|i| q[i] - p[i]);
-    let m = d.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-    if m == 0.0 {
-        return 0.0;
-    }
-    m * d.iter().map(|c| (c / m) * (c / m)).sum::<f64>().sqrt()
-}
 
 fn assert_close(got: f64, want: f64, what: &str) {
     assert!(

@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{distances, every_backend};
+use common::{distances, every_backend, straight};
 use exact_geodesics::glam::DVec3;
 use exact_geodesics::scalar::{Adaptive, Real};
 use exact_geodesics::{
@@ -43,16 +43,6 @@ fn a_sliver_folded_onto_a_coplanar_face_is_unfolded_not_joined_to_it() {
         );
         assert_eq!(d[2], f64::INFINITY, "{backend}: v2 is used by no face");
     }
-}
-
-fn straight(mesh: &TriMesh, a: u32, b: u32) -> f64 {
-    let (p, q) = (mesh.position(VertexId(a)), mesh.position(VertexId(b)));
-    let d = [0, 1, 2].map(|i| q[i] - p[i]);
-    let m = d.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-    if m == 0.0 {
-        return 0.0;
-    }
-    m * d.iter().map(|c| (c / m) * (c / m)).sum::<f64>().sqrt()
 }
 
 /// A bumpy grid (units of 1e20) in which `v5` was moved onto the edge `(v6, v9)`, at a quarter

@@ -293,3 +293,15 @@ pub fn every_backend(mesh: &TriMesh, source: u32) -> [(&'static str, Vec<f64>); 
         ("exact", distances::<Real>(mesh, source)),
     ]
 }
+
+/// The straight-line distance between two vertices, without overflow or underflow at any
+/// scale.
+pub fn straight(mesh: &TriMesh, a: u32, b: u32) -> f64 {
+    let (p, q) = (mesh.position(VertexId(a)), mesh.position(VertexId(b)));
+    let d = [0, 1, 2].map(|i| q[i] - p[i]);
+    let m = d.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    if m == 0.0 {
+        return 0.0;
+    }
+    m * d.iter().map(|c| (c / m) * (c / m)).sum::<f64>().sqrt()
+}
