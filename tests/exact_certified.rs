@@ -111,6 +111,23 @@ fn ties_of_mirror_images_are_certified_and_agree_with_f64() {
     }
 }
 
+/// Geodesics through strips of congruent triangles (images of one another under the sphere's
+/// exact symmetries, or merely triangle by triangle) have equal lengths built by different
+/// chains of constructions: their ties are proved by congruence, one expression per path
+/// shape. Before, these runs left 8 and 25 decisions uncertified.
+#[test]
+fn ties_of_congruent_paths_are_certified_and_agree_with_f64() {
+    for (level, v) in [(1, 13), (2, 20)] {
+        let mesh = shapes::icosphere(level);
+        let source = SurfacePoint::Vertex(VertexId(v));
+        assert_certified_and_agrees_with_f64(
+            &mesh,
+            source,
+            &format!("icosphere {level} from v{v}"),
+        );
+    }
+}
+
 /// The faces of an `n` x `n` grid of squares whose `(n + 1)^2` vertices are numbered row by
 /// row, each square split by its diagonal from its first corner.
 fn lattice_faces(n: u32) -> Vec<[u32; 3]> {

@@ -2,6 +2,7 @@
 //! ordered by the smallest distance each gives, and vertices waiting to act as pseudo-sources)
 //! and the best known distance of every vertex.
 
+use super::paths::Path;
 use super::source::SurfacePoint;
 use super::unfold::Unfolding;
 use super::wedge::Wedge;
@@ -13,10 +14,12 @@ use std::collections::BinaryHeap;
 
 /// The best known distance of a vertex: an upper bound during propagation, final after it.
 #[derive(Clone, Debug)]
-pub(crate) struct VertexDistance<S> {
+pub(crate) struct VertexDistance<S: Scalar> {
     pub(crate) distance: S,
     pub(crate) approx: f64,
     pub(crate) source: SourceId,
+    /// The path whose length the distance is, where the run proves ties by symmetry.
+    pub(crate) path: S::Kept<Path>,
 }
 
 /// What an event is about: a wedge of an edge list (as long as it is there), or a vertex whose
@@ -53,7 +56,7 @@ impl Ord for Event {
 }
 
 /// The queue of events and the vertices' distances.
-pub(crate) struct Front<S> {
+pub(crate) struct Front<S: Scalar> {
     vertices: Vec<Option<VertexDistance<S>>>,
     /// Whether a vertex's distance improved since it last acted as a pseudo-source.
     pending_emission: Vec<bool>,
@@ -111,12 +114,12 @@ impl<S: Scalar> Front<S> {
         self.vertices[v.index()].as_ref()
     }
 
-    /// The distance and source of a vertex whose distance improved since it last acted as a
-    /// pseudo-source; the vertex is then no longer pending.
-    pub(crate) fn take_emission(&mut self, v: VertexId) -> Option<(S, SourceId)> {
+    /// The distance, source and path of a vertex whose distance improved since it last acted
+    /// as a pseudo-source; the vertex is then no longer pending.
+    pub(crate) fn take_emission(&mut self, v: VertexId) -> Option<(S, SourceId, S::Kept<Path>)> {
         let known = self.vertices[v.index()].as_ref()?;
         std::mem::take(&mut self.pending_emission[v.index()])
-            .then(|| (known.distance.clone(), known.source))
+            .then(|| (known.distance.clone(), known.source, known.path.clone()))
     }
 
     /// Marks a vertex as having acted as a pseudo-source at its present distance.
@@ -133,7 +136,7 @@ impl<S: Scalar> Front<S> {
         (mesh, unfolding): (&TriMesh, &Unfolding<S>),
         v: VertexId,
         distance: S,
-        source: SourceId,
+        (source, path): (SourceId, S::Kept<Path>),
     ) {
         let slot = &mut self.vertices[v.index()];
         match slot {
@@ -143,10 +146,12 @@ impl<S: Scalar> Front<S> {
         }
         let approx = distance.to_f64();
         let twin_distance = unfolding.has_twin(v).then(|| distance.clone());
+        let twin_path = twin_distance.as_ref().map(|_| path.clone());
         *slot = Some(VertexDistance {
             distance,
             approx,
             source,
+            path,
         });
         if mesh.may_bend_geodesics(v) {
             self.pending_emission[v.index()] = true;
@@ -155,11 +160,12 @@ impl<S: Scalar> Front<S> {
                 kind: EventKind::Vertex(v),
             });
         }
-        if let Some(distance) = twin_distance {
+        if let (Some(distance), Some(path)) = (twin_distance, twin_path) {
             for &e in mesh.vertex_edges(v) {
                 if unfolding.is_zero_length(e) {
                     let other = mesh.edge(e).other(v).expect("an edge of the vertex");
-                    self.improve_vertex((mesh, unfolding), other, distance.clone(), source);
+                    let reached = (source, path.clone());
+                    self.improve_vertex((mesh, unfolding), other, distance.clone(), reached);
                 }
             }
         }
@@ -167,15 +173,16 @@ impl<S: Scalar> Front<S> {
 
     /// A wedge's distance `d` at the vertex `v`, offered to it: no lower than its pseudo-source's
     /// straight line to `v` in space, where the backend repairs rounding ([`Scalar::at_least`]).
+    /// `path` is the path of the wedge's distance there, if kept.
     pub(crate) fn offer_vertex(
         &mut self,
         (mesh, unfolding, sources): (&TriMesh, &Unfolding<S>, &[SurfacePoint]),
         v: VertexId,
-        d: S,
+        (d, path): (S, S::Kept<Path>),
         w: &Wedge<S>,
     ) {
         let d = S::at_least(d, || unfolding.straight_bound(mesh, w, v, sources));
-        self.improve_vertex((mesh, unfolding), v, d, w.source);
+        self.improve_vertex((mesh, unfolding), v, d, (w.source, path));
     }
 
     /// The vertices' distances at the end of a run, those beyond `max` (the run's maximum

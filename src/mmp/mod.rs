@@ -9,6 +9,7 @@ mod field;
 mod flat_region;
 mod front;
 mod intersect;
+mod paths;
 mod planar;
 mod propagate;
 mod provenance;

@@ -7,8 +7,9 @@
 use super::field::GeodesicField;
 use super::flat_region::RegionImage;
 use super::front::{EventKind, Front};
+use super::paths::{continued, CongruentPaths, Path};
 use super::planar::Planar;
-use super::provenance::{Anchor, Provenance};
+use super::provenance::{keeps_values, Anchor, Provenance};
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::stop::StopPoints;
@@ -218,9 +219,13 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     Ok(engine.finish())
 }
 
-/// What a wedge of a (pseudo-)source keeps, if given: its distances at its edge's vertices, and
-/// its pseudo-source in the frame of a flat region.
-type SourceKept<S> = (Option<[<S as Scalar>::Kept<S>; 2]>, Option<RegionImage<S>>);
+/// What a wedge of a (pseudo-)source keeps, if given: its distances at its edge's vertices, its
+/// pseudo-source in the frame of a flat region, and its path.
+type SourceKept<S> = (
+    Option<[<S as Scalar>::Kept<S>; 2]>,
+    Option<RegionImage<S>>,
+    <S as Scalar>::Kept<Path>,
+);
 
 /// A wedge about to be born on an edge: the edge, the ends of its range (unsorted), its
 /// pseudo-source there, and what it keeps of its construction.
@@ -235,6 +240,9 @@ struct Engine<'m, S: Scalar> {
     front: Front<S>,
     max_distance: f64,
     stop: Option<StopPoints<S>>,
+    /// One expression per vertex distance of congruent paths, where the run proves ties by
+    /// congruence (see `paths.rs`).
+    paths: Option<CongruentPaths<S>>,
     stats: Stats,
 }
 
@@ -252,9 +260,10 @@ impl<S: Scalar> Arrivals<S> for Reach<'_, S> {
         self.front.push_wedge(at, wedge);
     }
 
-    fn reach(&mut self, v: VertexId, d: S, w: &Wedge<S>) {
+    fn reach(&mut self, v: VertexId, d: S, (w, kept): (&Wedge<S>, &Provenance<S>)) {
         let surface = (self.mesh, self.unfolding, self.sources);
-        self.front.offer_vertex(surface, v, d, w);
+        let path = continued::<S>(&kept.path, |p| p.to(v));
+        self.front.offer_vertex(surface, v, (d, path), w);
     }
 }
 
@@ -270,10 +279,14 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let max_distance = options
             .max_distance
             .map_or(f64::INFINITY, |d| unfolding.scaled_from_model(d));
+        let paths = keeps_values::<S>()
+            .then(|| CongruentPaths::new(mesh, &sources))
+            .flatten();
         Engine {
             mesh,
             unfolding,
             sources,
+            paths,
             wedges: WedgeLists::new(mesh.edge_count(), options.record_decisions),
             front: Front::new(mesh.vertex_count()),
             max_distance,
@@ -315,9 +328,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     }
                 },
                 EventKind::Vertex(v) => {
-                    if let Some((sigma, source)) = self.front.take_emission(v) {
+                    if let Some((sigma, source, path)) = self.front.take_emission(v) {
                         self.stats.pseudo_source_emissions += 1;
-                        self.emit_from_vertex(v, sigma, PseudoSource::Vertex(v), source);
+                        self.emit_from_vertex(v, (sigma, path), PseudoSource::Vertex(v), source);
                     }
                 }
             }
@@ -364,16 +377,26 @@ impl<'m, S: Scalar> Engine<'m, S> {
             .insert((w, kept), edge, &mut self.stats, &mut reach);
     }
 
-    /// Lowers a vertex's distance if `distance` is better ([`Front::improve_vertex`]).
-    fn improve_vertex(&mut self, v: VertexId, distance: S, source: SourceId) {
+    /// Lowers a vertex's distance if `distance` (the length of `path`, if kept) is better
+    /// ([`Front::improve_vertex`]).
+    fn improve_vertex(&mut self, v: VertexId, distance: S, reached: (SourceId, S::Kept<Path>)) {
         let surface = (self.mesh, &self.unfolding);
-        self.front.improve_vertex(surface, v, distance, source);
+        self.front.improve_vertex(surface, v, distance, reached);
     }
 
-    /// A wedge's distance `d` at the vertex `v`, offered to it ([`Front::offer_vertex`]).
-    fn offer_vertex(&mut self, v: VertexId, d: S, w: &Wedge<S>) {
+    /// A wedge's distance `d` at the vertex `v` (the length of `path`, if kept), offered to it
+    /// ([`Front::offer_vertex`]).
+    fn offer_vertex(&mut self, v: VertexId, d: (S, S::Kept<Path>), w: &Wedge<S>) {
         let surface = (self.mesh, &self.unfolding, self.sources.as_slice());
         self.front.offer_vertex(surface, v, d, w);
+    }
+
+    /// The path that starts at source vertex `v`, where the run keeps paths.
+    fn source_path(&self, v: VertexId) -> S::Kept<Path> {
+        match self.paths {
+            Some(_) => S::keep(|| Path::at_source(v)),
+            None => Default::default(),
+        }
     }
 
     /// The initial wedges of a source [SSK+05 §4]: on every edge of every face containing it.
@@ -396,7 +419,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     Side::FIRST,
                     S::zero(),
                     (source, k),
-                    (None, None),
+                    (None, None, Default::default()),
                 );
                 let p = self.unfolding.position(self.mesh, point);
                 let faces: Vec<FaceId> = self.mesh.edge_faces(edge).collect();
@@ -410,8 +433,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
     }
 
     fn emit_source_vertex(&mut self, v: VertexId, k: SourceId) {
-        self.improve_vertex(v, S::zero(), k);
-        self.emit_from_vertex(v, S::zero(), PseudoSource::Source(k), k);
+        let path = self.source_path(v);
+        self.improve_vertex(v, S::zero(), (k, path.clone()));
+        self.emit_from_vertex(v, (S::zero(), path), PseudoSource::Source(k), k);
         self.front.emitted(v);
     }
 
@@ -436,7 +460,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             for c in mesh.face(f) {
                 let q = self.unfolding.position(mesh, &SurfacePoint::Vertex(c));
                 if (0..3).all(|i| q[i].compare(&p[i]) == Ordering::Equal) {
-                    self.improve_vertex(c, sigma.clone(), k);
+                    self.improve_vertex(c, sigma.clone(), (k, Default::default()));
                 }
             }
             for g in mesh.face_edges(f) {
@@ -453,7 +477,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
                         }
                     }
                 }
-                self.add_wedge(g, at, side, sigma.clone(), (source, k), (None, None));
+                let kept = (None, None, Default::default());
+                self.add_wedge(g, at, side, sigma.clone(), (source, k), kept);
             }
         }
     }
@@ -462,17 +487,33 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// opposite it in each incident face, and along each incident edge. A vertex lying inside
     /// its opposite edge (the middle corner of a degenerate face) is a point of that edge as
     /// well, and sends wedges into the face beyond it as a source on an edge does.
-    fn emit_from_vertex(&mut self, v: VertexId, sigma: S, source: PseudoSource, k: SourceId) {
+    fn emit_from_vertex(
+        &mut self,
+        v: VertexId,
+        (sigma, path): (S, S::Kept<Path>),
+        source: PseudoSource,
+        k: SourceId,
+    ) {
         let mesh = self.mesh;
         let mut beyond = Vec::new();
         // The distance through the vertex to each neighbour, one value for every wedge of the
-        // vertex that reaches the neighbour (kept by number types that keep values).
+        // vertex that reaches the neighbour (kept by number types that keep values), and one
+        // for every congruent path where the run keeps paths.
+        let (unfolding, paths) = (&self.unfolding, &mut self.paths);
         let through: Vec<(VertexId, S::Kept<S>)> = mesh
             .vertex_edges(v)
             .iter()
             .filter_map(|&g| {
                 let other = mesh.edge(g).other(v)?;
-                Some((other, S::keep(|| sigma.clone() + self.unfolding.length(g))))
+                let length = || sigma.clone() + unfolding.length(g);
+                let path = S::kept(&path).map(|p| p.along(g).to(other));
+                Some((
+                    other,
+                    S::keep(|| match (paths.as_mut(), path) {
+                        (Some(paths), Some(path)) => paths.length(mesh, &path, length),
+                        _ => length(),
+                    }),
+                ))
             })
             .collect();
         let to = |u: VertexId| -> S::Kept<S> {
@@ -516,7 +557,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     region,
                     point: regions.corner(region, v).clone(),
                 });
-            self.add_wedge(g, at, side, sigma.clone(), (source, k), (Some(ends), image));
+            let across = continued::<S>(&path, |p| p.across(f));
+            let kept = (Some(ends), image, across);
+            self.add_wedge(g, at, side, sigma.clone(), (source, k), kept);
         }
         for &g in mesh.vertex_edges(v) {
             let x = if self.unfolding.ends(mesh, g)[0] == v {
@@ -526,13 +569,14 @@ impl<'m, S: Scalar> Engine<'m, S> {
             };
             let at = Planar { x, y: S::zero() };
             let ends = self.unfolding.ends(mesh, g).map(to);
+            let along = continued::<S>(&path, |p| p.along(g));
             self.add_wedge(
                 g,
                 at,
                 Side::FIRST,
                 sigma.clone(),
                 (source, k),
-                (Some(ends), None),
+                (Some(ends), None, along),
             );
         }
         if !beyond.is_empty() {
@@ -551,7 +595,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         tau: Side,
         sigma: S,
         (source, k): (PseudoSource, SourceId),
-        (at_ends, image): SourceKept<S>,
+        (at_ends, image, path): SourceKept<S>,
     ) {
         let wedge = Wedge {
             edge: g,
@@ -568,10 +612,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let d = wedge.distance_function();
             [S::keep(|| d.at(&wedge.b0)), S::keep(|| d.at(&wedge.b1))]
         });
-        self.insert(
-            wedge,
-            Provenance::new(at_ends, [None, None]).with_image(image),
-        );
+        let kept = Provenance::new(at_ends, [None, None])
+            .with_image(image)
+            .with_path(path);
+        self.insert(wedge, kept);
     }
 
     /// Propagates a wedge across the face on the far side of its edge [SSK+05 §4.1, LZT Fig. 2c]:
@@ -641,7 +685,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
             };
             straight + &w.sigma
         };
-        let at_apex = S::keep(apex_distance);
+        // The distance at the apex is the length of the wedge's path on across the face; one
+        // expression for congruent paths where the run keeps paths.
+        let path = continued::<S>(&kept.path, |p| p.across(face));
+        let apex_path = continued::<S>(&path, |p| p.to(layout.apex_vertex()));
+        let paths = &mut self.paths;
+        let at_apex = S::keep(|| match (paths.as_mut(), S::kept(&apex_path)) {
+            (Some(paths), Some(p)) => paths.length(mesh, &p, apex_distance),
+            _ => apex_distance(),
+        });
         let apex = S::within(&layout.apex_shadow(&s), &w.b0, &w.b1, &w.reach(length)).then(|| {
             let d = S::kept(&at_apex).unwrap_or_else(apex_distance);
             (layout.apex_vertex(), d)
@@ -737,7 +789,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 [kept.at_ends[0].clone(), at_apex.clone()]
             };
             let (at, image) = source_on(near, &to_near);
-            let kept = Provenance::new(ends, [a0, a1]).with_image(image);
+            let kept = Provenance::new(ends, [a0, a1])
+                .with_image(image)
+                .with_path(path.clone());
             children[0] = Some((near, positions, at, kept));
         }
         if side1 == Ordering::Greater && !self.unfolding.is_zero_length(far) {
@@ -761,11 +815,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 [at_apex.clone(), kept.at_ends[1].clone()]
             };
             let (at, image) = source_on(far, &to_far);
-            let kept = Provenance::new(ends, [a0, a1]).with_image(image);
+            let kept = Provenance::new(ends, [a0, a1])
+                .with_image(image)
+                .with_path(path.clone());
             children[1] = Some((far, positions, at, kept));
         }
         if let Some((v, d)) = apex {
-            self.offer_vertex(v, d, w);
+            self.offer_vertex(v, (d, apex_path), w);
         }
         for (g, [p0, p1], at, mut kept) in children.into_iter().flatten() {
             let (b0, b1) = if p0.compare(&p1) == Ordering::Greater {

@@ -13,6 +13,7 @@
 //!   pseudo-source's wedges do.
 
 use super::flat_region::RegionImage;
+use super::paths::Path;
 use super::planar::Planar;
 use crate::scalar::{Scalar, SourceDistance};
 
@@ -52,6 +53,9 @@ pub(crate) struct Provenance<S: Scalar> {
     /// The pseudo-source's image in the frame of the flat region the wedge lies in, if it does
     /// (see `flat_region.rs`).
     pub(crate) image: S::Kept<RegionImage<S>>,
+    /// The path the wedge continues, up to the face it came across (or the edge it lies
+    /// along), where the run proves ties by symmetry (see `paths.rs`).
+    pub(crate) path: S::Kept<Path>,
 }
 
 impl<S: Scalar> Default for Provenance<S> {
@@ -60,6 +64,7 @@ impl<S: Scalar> Default for Provenance<S> {
             at_ends: Default::default(),
             anchors: Default::default(),
             image: Default::default(),
+            path: Default::default(),
         }
     }
 }
@@ -71,12 +76,19 @@ impl<S: Scalar> Provenance<S> {
             at_ends,
             anchors: anchors.map(|a| a.map_or_else(Default::default, |a| S::keep(|| a))),
             image: Default::default(),
+            path: Default::default(),
         }
     }
 
     /// The same provenance with the pseudo-source's image in a flat region's frame.
     pub(crate) fn with_image(mut self, image: Option<RegionImage<S>>) -> Self {
         self.image = image.map_or_else(Default::default, |i| S::keep(|| i));
+        self
+    }
+
+    /// The same provenance with the path the wedge continues.
+    pub(crate) fn with_path(mut self, path: S::Kept<Path>) -> Self {
+        self.path = path;
         self
     }
 
@@ -101,14 +113,15 @@ impl<S: Scalar> Provenance<S> {
             at_ends: self.at_ends.clone(),
             anchors: [anchor(0), anchor(1)],
             image: self.image.clone(),
+            path: self.path.clone(),
         }
     }
 
     /// The provenance of a wedge joined from two that continue one another, this one first
     /// and `next` after it along the edge, with the same distance function (as the backend
     /// decided): the anchor of each range end from the wedge that owned that end, the
-    /// distances at the edge's vertices and the region image from the first where it keeps
-    /// them (the two give the same values there).
+    /// distances at the edge's vertices, the region image and the path from the first where
+    /// it keeps them (the two give the same values there).
     pub(crate) fn joined(self, next: Self) -> Self {
         let either = |a: S::Kept<S>, b: S::Kept<S>| if S::kept(&a).is_some() { a } else { b };
         let [first_0, first_1] = self.at_ends;
@@ -120,10 +133,21 @@ impl<S: Scalar> Provenance<S> {
         } else {
             next.image
         };
+        let path = if S::kept(&self.path).is_some() {
+            self.path
+        } else {
+            next.path
+        };
         Provenance {
             at_ends: [either(first_0, next_0), either(first_1, next_1)],
             anchors: [anchor_0, anchor_1],
             image,
+            path,
         }
     }
+}
+
+/// Whether the number type keeps values ([`Scalar::Kept`]), and wedges their provenance.
+pub(crate) fn keeps_values<S: Scalar>() -> bool {
+    S::kept(&S::keep(|| ())).is_some()
 }

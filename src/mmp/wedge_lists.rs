@@ -158,8 +158,9 @@ impl WedgeRef {
 pub(crate) trait Arrivals<S: Scalar> {
     /// The wedge `wedge`, named `at`, waits to be propagated.
     fn queue(&mut self, at: WedgeRef, wedge: &Wedge<S>);
-    /// The wedge `w` reaches the vertex `v` of its edge at distance `d`.
-    fn reach(&mut self, v: VertexId, d: S, w: &Wedge<S>);
+    /// A wedge, with what it keeps of its construction, reaches the vertex `v` of its
+    /// edge at distance `d`.
+    fn reach(&mut self, v: VertexId, d: S, wedge: (&Wedge<S>, &Provenance<S>));
 }
 
 /// Whether the wedge of a queue event is due ([`WedgeLists::due`]).
@@ -366,11 +367,11 @@ impl<S: Scalar> WedgeLists<S> {
                     let reach = w.reach(length);
                     if S::within(&zero, &piece.lo, &piece.hi, &reach) {
                         let d = S::kept(&kept.at_ends[0]).unwrap_or_else(|| mine.at(&zero));
-                        arrivals.reach(v0, d, w);
+                        arrivals.reach(v0, d, (w, kept));
                     }
                     if S::within(length, &piece.lo, &piece.hi, &reach) {
                         let d = S::kept(&kept.at_ends[1]).unwrap_or_else(|| mine.at(length));
-                        arrivals.reach(v1, d, w);
+                        arrivals.reach(v1, d, (w, kept));
                     }
                     let piece_kept = if anchored(kept) {
                         kept.trimmed(keeps([&w.b0, &w.b1], &piece.lo, &piece.hi))
@@ -490,7 +491,7 @@ mod tests {
         fn queue(&mut self, at: WedgeRef, _wedge: &Wedge<f64>) {
             self.0.push(at);
         }
-        fn reach(&mut self, _v: VertexId, _d: f64, _w: &Wedge<f64>) {}
+        fn reach(&mut self, _v: VertexId, _d: f64, _w: (&Wedge<f64>, &Provenance<f64>)) {}
     }
 
     /// A wedge on `[b0, b1]` of edge 0 (of length 1) from a pseudo-source above `x` at `sigma`.

@@ -36,6 +36,17 @@ mod refine;
 pub use super::audit::{Certificate, Uncertainty, ZeroProof};
 pub use super::bignum::{Integer, Rational};
 
+/// The exact squared distance between two points with finite float coordinates: equal values
+/// prove equal lengths.
+pub(crate) fn squared_distance(a: [f64; 3], b: [f64; 3]) -> Option<Rational> {
+    let mut sum = Rational::from(0);
+    for (x, y) in a.into_iter().zip(b) {
+        let d = Rational::from_f64(x)? - Rational::from_f64(y)?;
+        sum = sum + d.clone() * d;
+    }
+    Some(sum)
+}
+
 use super::audit::{self, DecisionCounts, Site};
 use super::bignum::{Float, Round};
 use super::roots::{self, CertifiedSign};

@@ -1,0 +1,333 @@
+//! Ties proved by congruence: one expression for the lengths of congruent paths.
+//!
+//! A distance that a wedge gives a vertex is the length of a path of straight segments in
+//! unfoldings: from the source through a chain of faces to the first pseudo-source, and on
+//! through chains to the vertex [SSK+05 §4, LZT §2]. Each segment's length is fixed by the
+//! shape of its *strip*, the chain of triangles laid out in the plane: the lengths of their
+//! sides, which sides they share, and the corners the segment joins. The same strip read
+//! backwards, or mirrored, gives the same length; so does any strip of congruent triangles
+//! glued alike, wherever it lies on the mesh. Such segments come from different chains of
+//! constructions, whose expressions no normal form relates: on an icosphere, the geodesics
+//! from a vertex to its antipode through strips congruent under the sphere's symmetries (or
+//! merely triangle by triangle) tie, and the exact backend could not prove it.
+//!
+//! [`CongruentPaths`] describes each segment's strip by the classes of its sides' exact squared
+//! lengths, keys a vertex distance by its segments' least descriptions (forwards or backwards,
+//! either way round), and hands out one expression per key, so that those ties are zeros by
+//! structure. A path is a sum of its segments, so their order does not matter. Kept only by
+//! number types that keep values, on meshes where a chain of faces fixes its strip: every
+//! source a vertex, and no degenerate faces or edges with more than two faces.
+
+use super::source::SurfacePoint;
+use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
+use crate::scalar::exact::squared_distance;
+use crate::scalar::Scalar;
+use std::collections::HashMap;
+use std::sync::Arc;
+
+/// A step of a path: a vertex it passes, a face it crosses, or an edge it runs along.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub(crate) enum Step {
+    Vertex(u32),
+    Face(u32),
+    Edge(u32),
+}
+
+/// A path, shared between the wedges that continue it: its last step and what came before.
+#[derive(Clone, Debug)]
+pub(crate) struct Path(Arc<Link>);
+
+#[derive(Debug)]
+struct Link {
+    step: Step,
+    before: Option<Path>,
+}
+
+impl Drop for Link {
+    /// Unlinks a long path iteratively: dropping it recursively could overflow the stack.
+    fn drop(&mut self) {
+        let mut next = self.before.take();
+        while let Some(Path(link)) = next {
+            next = Arc::try_unwrap(link).ok().and_then(|mut l| l.before.take());
+        }
+    }
+}
+
+impl Path {
+    /// The path that starts at a source vertex.
+    pub(crate) fn at_source(v: VertexId) -> Path {
+        Path(Arc::new(Link {
+            step: Step::Vertex(v.0),
+            before: None,
+        }))
+    }
+
+    /// The path continued by one step.
+    pub(crate) fn then(&self, step: Step) -> Path {
+        Path(Arc::new(Link {
+            step,
+            before: Some(self.clone()),
+        }))
+    }
+
+    /// The path continued across a face.
+    pub(crate) fn across(&self, f: FaceId) -> Path {
+        self.then(Step::Face(f.0))
+    }
+
+    /// The path continued along an edge.
+    pub(crate) fn along(&self, e: EdgeId) -> Path {
+        self.then(Step::Edge(e.0))
+    }
+
+    /// The path ended at a vertex.
+    pub(crate) fn to(&self, v: VertexId) -> Path {
+        self.then(Step::Vertex(v.0))
+    }
+
+    /// The steps, first to last.
+    fn steps(&self) -> Vec<Step> {
+        let mut steps = Vec::new();
+        let mut at = Some(self);
+        while let Some(Path(link)) = at {
+            steps.push(link.step);
+            at = link.before.as_ref();
+        }
+        steps.reverse();
+        steps
+    }
+}
+
+/// One expression for the length of every path congruent to one already met (see the
+/// module's docs), for one run.
+pub(crate) struct CongruentPaths<S> {
+    /// The class of each edge: edges of one class have equal exact lengths.
+    classes: Vec<u32>,
+    lengths: HashMap<Vec<u32>, S>,
+}
+
+/// Separates the segments of a key.
+const SEGMENT_END: u32 = u32::MAX;
+
+impl<S: Scalar> CongruentPaths<S> {
+    /// The table for a run from `sources` on `mesh`, if a chain of faces fixes its strip there.
+    pub(crate) fn new(mesh: &TriMesh, sources: &[SurfacePoint]) -> Option<Self> {
+        let report = mesh.validation();
+        let fixed = sources.iter().all(|s| matches!(s, SurfacePoint::Vertex(_)))
+            && report.zero_area_faces.is_empty()
+            && report.non_manifold_edges.is_empty()
+            && report.duplicate_faces.is_empty()
+            && report.float_unresolved_edges.is_empty();
+        if !fixed {
+            return None;
+        }
+        let mut ids = HashMap::new();
+        let classes = mesh
+            .edges()
+            .iter()
+            .map(|e| {
+                let [a, b] = e.vertices.map(|v| mesh.position(v).to_array());
+                let next = ids.len() as u32;
+                Some(*ids.entry(squared_distance(a, b)?).or_insert(next))
+            })
+            .collect::<Option<_>>()?;
+        Some(CongruentPaths {
+            classes,
+            lengths: HashMap::new(),
+        })
+    }
+
+    /// The length of `path` (a vertex distance): the expression of a congruent path met
+    /// before, or `length()` kept for those to come. A path whose strips it cannot describe
+    /// keeps its own.
+    pub(crate) fn length(&mut self, mesh: &TriMesh, path: &Path, length: impl FnOnce() -> S) -> S {
+        match self.key(mesh, path) {
+            Some(key) => self.lengths.entry(key).or_insert_with(length).clone(),
+            None => length(),
+        }
+    }
+
+    /// The descriptions of the path's segments, sorted and joined.
+    fn key(&self, mesh: &TriMesh, path: &Path) -> Option<Vec<u32>> {
+        let steps = path.steps();
+        let mut segments = Vec::new();
+        let mut start = 0;
+        for (i, step) in steps.iter().enumerate().skip(1) {
+            if let Step::Vertex(_) = step {
+                segments.push(self.segment(mesh, &steps[start..=i])?);
+                start = i;
+            }
+        }
+        segments.sort_unstable();
+        let mut key = Vec::new();
+        for segment in segments {
+            key.extend(segment);
+            key.push(SEGMENT_END);
+        }
+        Some(key)
+    }
+
+    /// The class of the edge between two vertices.
+    fn class(&self, mesh: &TriMesh, a: VertexId, b: VertexId) -> Option<u32> {
+        Some(self.classes[mesh.edge_between(a, b)?.index()])
+    }
+
+    /// The least description of a segment's strip: `steps` runs from one vertex through faces
+    /// (or along one edge) to another.
+    fn segment(&self, mesh: &TriMesh, steps: &[Step]) -> Option<Vec<u32>> {
+        let (Step::Vertex(s), Step::Vertex(v)) = (*steps.first()?, *steps.last()?) else {
+            return None;
+        };
+        let (s, v) = (VertexId(s), VertexId(v));
+        let middle = &steps[1..steps.len() - 1];
+        if let [Step::Edge(_)] = middle {
+            return Some(vec![self.class(mesh, s, v)?]);
+        }
+        let faces: Vec<FaceId> = middle
+            .iter()
+            .map(|step| match step {
+                Step::Face(f) => Some(FaceId(*f)),
+                _ => None,
+            })
+            .collect::<Option<_>>()?;
+        // The segment ends at the copy of its end that the last faces turn about: in the first
+        // of the run of faces at the chain's end that have it as a corner (an earlier face
+        // with that corner, before the chain left it, unfolds another copy of it).
+        let has = |f: FaceId, u: VertexId| mesh.face(f).contains(&u);
+        if !has(*faces.last()?, v) {
+            return None;
+        }
+        let mut last = faces.len() - 1;
+        while last > 0 && has(faces[last - 1], v) {
+            last -= 1;
+        }
+        let faces = &faces[..=last];
+        if last == 0 {
+            return Some(vec![self.class(mesh, s, v)?]);
+        }
+        if !has(faces[0], s) || faces[1..].iter().any(|&f| has(f, s)) {
+            return None;
+        }
+        let backwards: Vec<FaceId> = faces.iter().rev().copied().collect();
+        [(s, faces, v), (v, &backwards[..], s)]
+            .into_iter()
+            .flat_map(|(from, chain, to)| {
+                [false, true].map(|flip| self.strip(mesh, (from, chain, to), flip))
+            })
+            .collect::<Option<Vec<_>>>()?
+            .into_iter()
+            .min()
+    }
+
+    /// A strip's description from `from` through `chain` (at least two faces) to `to`: the
+    /// classes of the first face's sides, then of each next face's two new sides and which
+    /// shared corner it keeps; `flip` names the first shared side's corners the other way
+    /// round (the strip's mirror image).
+    fn strip(
+        &self,
+        mesh: &TriMesh,
+        (from, chain, to): (VertexId, &[FaceId], VertexId),
+        flip: bool,
+    ) -> Option<Vec<u32>> {
+        let shared = |f: FaceId, g: FaceId| -> Option<[VertexId; 2]> {
+            let common: Vec<VertexId> = mesh
+                .face(f)
+                .into_iter()
+                .filter(|c| mesh.face(g).contains(c))
+                .collect();
+            <[VertexId; 2]>::try_from(common).ok()
+        };
+        let [mut a, mut b] = shared(chain[0], chain[1])?;
+        if flip {
+            std::mem::swap(&mut a, &mut b);
+        }
+        let class = |x, y| self.class(mesh, x, y);
+        let mut description = vec![class(from, a)?, class(from, b)?, class(a, b)?];
+        for (i, &f) in chain.iter().enumerate().skip(1) {
+            let apex = *mesh.face(f).iter().find(|&&c| c != a && c != b)?;
+            description.extend([class(a, apex)?, class(b, apex)?]);
+            if i + 1 == chain.len() {
+                return (apex == to).then_some(description);
+            }
+            let next = shared(f, chain[i + 1])?;
+            if next.contains(&a) && next.contains(&apex) {
+                b = apex;
+                description.push(0);
+            } else if next.contains(&apex) && next.contains(&b) {
+                a = apex;
+                description.push(1);
+            } else {
+                return None;
+            }
+        }
+        None
+    }
+}
+
+/// A kept path continued by `step`; nothing where no path is kept.
+pub(crate) fn continued<S: Scalar>(
+    path: &S::Kept<Path>,
+    step: impl FnOnce(&Path) -> Path,
+) -> S::Kept<Path> {
+    S::kept(path).map_or_else(Default::default, |p| S::keep(|| step(&p)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::shapes;
+    use std::collections::HashSet;
+
+    /// The paths from a corner of each face across its edge to the far corner of the face
+    /// beyond, with their keys.
+    fn keys_across_edges(mesh: &TriMesh) -> Vec<(Vec<u32>, Vec<u32>)> {
+        let table = CongruentPaths::<f64>::new(mesh, &[SurfacePoint::Vertex(VertexId(0))])
+            .expect("a mesh whose chains fix their strips");
+        let corner = |f: FaceId, a: VertexId, b: VertexId| {
+            *mesh.face(f).iter().find(|&&c| c != a && c != b).unwrap()
+        };
+        let mut keys = Vec::new();
+        for (e, edge) in mesh.edges().iter().enumerate() {
+            let faces: Vec<FaceId> = mesh.edge_faces(EdgeId(e as u32)).collect();
+            let [f, g] = faces[..] else { continue };
+            let [a, b] = edge.vertices;
+            let (s, v) = (corner(f, a, b), corner(g, a, b));
+            let forwards = Path::at_source(s).across(f).across(g).to(v);
+            let backwards = Path::at_source(v).across(g).across(f).to(s);
+            keys.push((
+                table.key(mesh, &forwards).expect("a described strip"),
+                table.key(mesh, &backwards).expect("a described strip"),
+            ));
+        }
+        keys
+    }
+
+    #[test]
+    fn congruent_strips_have_one_key_read_either_way() {
+        // A grid of unit squares split by diagonals: every two faces across an edge form one
+        // of a few shapes, wherever they lie.
+        let keys = keys_across_edges(&shapes::grid(4, 4, 1.0, 1.0));
+        assert!(keys.len() > 30);
+        assert!(keys
+            .iter()
+            .all(|(forwards, backwards)| forwards == backwards));
+        let distinct: HashSet<&Vec<u32>> = keys.iter().map(|(k, _)| k).collect();
+        assert!(distinct.len() <= 3, "{} shapes", distinct.len());
+    }
+
+    #[test]
+    fn strips_of_different_shapes_have_different_keys() {
+        // The same grid with every vertex moved by its own amount: no two strips congruent.
+        let grid = shapes::grid(4, 4, 1.0, 1.0);
+        let positions = grid
+            .positions()
+            .iter()
+            .enumerate()
+            .map(|(i, p)| p + glam::DVec3::new(0.01 * i as f64, 0.003 * (i * i) as f64, 0.0))
+            .collect();
+        let moved = TriMesh::new(positions, grid.faces().to_vec()).expect("a mesh");
+        let keys = keys_across_edges(&moved);
+        let distinct: HashSet<&Vec<u32>> = keys.iter().map(|(k, _)| k).collect();
+        assert_eq!(distinct.len(), keys.len());
+    }
+}
