@@ -332,3 +332,25 @@ fn a_needle_keeps_its_length_in_every_backend() {
         }
     }
 }
+
+/// The `degeneracy` corpus's mixed-magnitude case of seed 0: `v31` and `v32` lie 1e-6 apart
+/// at the end of the edge `(v25, v31)`, 2e8 long, and the geodesic from `v36` to `v18` runs
+/// by `v32`, whose distance function is lower than `v31`'s by 1e-6 all along that edge. The
+/// f64 backend took the two for one distance function (their images and sigmas agreed to
+/// 1e-12 of the range's length, 2e-4) and kept `v31`'s wedge: d(v18) 1e-8 long (relative).
+/// Against the exact backend.
+#[test]
+fn pseudo_sources_a_micron_apart_beside_a_long_edge_are_two_in_every_backend() {
+    let mesh = common::data_mesh("mixed_magnitudes_seed0.obj");
+    let want = distances::<Real>(&mesh, 36)[18];
+    for (backend, d) in [
+        ("f64", distances::<f64>(&mesh, 36)),
+        ("adaptive", distances::<Adaptive>(&mesh, 36)),
+    ] {
+        assert!(
+            (d[18] - want).abs() <= 1e-12 * want,
+            "{backend}: d(v18) = {}, exact {want}",
+            d[18]
+        );
+    }
+}

@@ -271,3 +271,91 @@ fn a_traced_path_is_as_long_as_its_distance_or_refused() {
         Err(e) => assert!(matches!(e, TraceError::NotShortest { .. }), "{e}"),
     }
 }
+
+/// Every backend traces `target` back to `source` with the length and distance `want`.
+fn assert_traced_straight(mesh: &TriMesh, source: u32, target: u32, want: f64) {
+    for (backend, (length, distance)) in every_backend_traced(mesh, source, target) {
+        assert!(
+            (distance - want).abs() <= 1e-12 * want,
+            "{backend}: v{source} -> v{target}: distance {distance}, want {want}"
+        );
+        assert!(
+            (length - want).abs() <= 1e-12 * want,
+            "{backend}: v{source} -> v{target}: length {length}, want {want}"
+        );
+    }
+}
+
+/// A cube of side 2 whose corner `v6` sits one ulp (4.4e-16) beyond `v2` along the edge from
+/// `v0`: the slivers `(v2, v6, v7)` and `(v4, v6, v2)` join them. From `v0` the geodesics to
+/// both run straight along that edge (`v2` lies on the segment from `v0` to `v6`). In the
+/// float backends the back-trace from `v6` walked to `v2` (on its way, rightly) and from `v2`
+/// by the sliver `(v2, v6, v7)`, tied at that resolution with the edge to `v0`, back to `v6`,
+/// round and round until it gave up ("lost its way"); a shortest path passes a point once.
+#[test]
+fn vertices_an_ulp_apart_are_traced_through_not_round_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.0, 0.0, 0.0],
+            [2.0, 0.0, 0.0],
+            [0.0, 2.0, 0.0],
+            [2.0, 2.0, 0.0],
+            [0.0, 0.0, 2.0],
+            [2.0, 0.0, 2.0],
+            [0.0, 2.0000000000000004, 0.0],
+            [2.0, 2.0, 2.0],
+        ],
+        vec![
+            [0, 2, 1],
+            [2, 3, 1],
+            [4, 5, 6],
+            [5, 7, 6],
+            [0, 1, 4],
+            [1, 5, 4],
+            [2, 6, 7],
+            [2, 7, 3],
+            [0, 4, 2],
+            [4, 6, 2],
+            [1, 3, 7],
+            [1, 7, 5],
+        ],
+    )
+    .expect("usable mesh");
+    assert_traced_straight(&mesh, 0, 6, straight(&mesh, 0, 6));
+    assert_traced_straight(&mesh, 0, 2, straight(&mesh, 0, 2));
+}
+
+/// An octahedron (rotated) with `v5` one ulp from `v2` in each coordinate, the corner `v3`
+/// moved onto the edge `(v5, v0)` (the face `(v5, v0, v3)` has zero area) and a face repeated
+/// reversed. The geodesic from `v0` to `v5` is that edge; the float backends' walk from `v5`
+/// was sent to `v2` and from `v2` back to `v5`, until it gave up.
+#[test]
+fn an_octahedron_corner_an_ulp_from_another_is_traced_to_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.7592294993296627, -0.09255840195443324, 0.6442076602891891],
+            [
+                -0.7592294993296627,
+                0.09255840195443324,
+                -0.6442076602891891,
+            ],
+            [1.1161937051204205, 1.203610787224653, -1.1425553314942765],
+            [0.8484705507773522, 0.2314838953403384, 0.19751691234332264],
+            [-1.1161937051204207, -1.2036107872246533, 1.1425553314942767],
+            [1.1161937051204207, 1.2036107872246533, -1.1425553314942767],
+        ],
+        vec![
+            [2, 0, 4],
+            [2, 1, 5],
+            [4, 2, 1],
+            [4, 1, 3],
+            [4, 3, 0],
+            [5, 2, 0],
+            [5, 1, 2],
+            [5, 3, 1],
+            [5, 0, 3],
+        ],
+    )
+    .expect("usable mesh");
+    assert_traced_straight(&mesh, 0, 5, straight(&mesh, 0, 5));
+}

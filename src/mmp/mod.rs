@@ -18,6 +18,7 @@ mod source;
 mod stats;
 mod stop;
 mod trace_back;
+mod trace_loop;
 mod unfold;
 mod wedge;
 mod wedge_lists;

@@ -7,6 +7,7 @@ use super::field::GeodesicField;
 use super::planar::Planar;
 use super::query::{Best, Via};
 use super::source::{PointError, SurfacePoint};
+use super::trace_loop::{Departure, LoopTie};
 use super::unfold::{Apex, FaceLayout};
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{EdgeId, FaceId, SourceId, VertexId};
@@ -140,8 +141,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// [`TraceError::NotShortest`] if it sends the walk by a way longer or shorter than the
     /// distance by more than 1e-9 of it.
     pub fn trace_back(&self, target: &SurfacePoint) -> Result<GeodesicPath, TraceError> {
-        let (trail, distance, source) = self.trace(target)?;
-        self.path_of(&trail, &distance, source)
+        self.checked_trace(target).map(|(path, ..)| path)
     }
 
     /// [`GeodesicField::trace_back`] with the backend's own numbers: where the path crosses an
@@ -151,7 +151,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// # Errors
     /// As [`GeodesicField::trace_back`].
     pub fn trace_back_exact(&self, target: &SurfacePoint) -> Result<ExactPath<S>, TraceError> {
-        let (trail, distance, source) = self.trace(target)?;
+        let (path, trail, distance) = self.checked_trace(target)?;
         let offsets = trail
             .points
             .iter()
@@ -164,24 +164,58 @@ impl<S: Scalar> GeodesicField<'_, S> {
             })
             .collect();
         Ok(ExactPath {
-            path: self.path_of(&trail, &distance, source)?,
+            path,
             offsets,
             distance: self.to_model(&distance),
         })
     }
 
+    /// The path, its trail and the target's distance (scaled units), checked against the
+    /// distance. Where the walk came round to a vertex it passed, and the vertices on that loop
+    /// tie at the backend's resolution, the arrival refused is that of the latest of them and,
+    /// if the path is then lost or not as long as the distance, that of the first.
+    fn checked_trace(
+        &self,
+        target: &SurfacePoint,
+    ) -> Result<(GeodesicPath, Trail<S>, S), TraceError> {
+        let attempt = |tie| {
+            let (trail, distance, source) = self.trace(target, tie)?;
+            let path = self.path_of(&trail, &distance, source)?;
+            Ok((path, trail, distance))
+        };
+        attempt(LoopTie::Latest).or_else(|error| match error {
+            TraceError::Lost { .. } | TraceError::NotShortest { .. } => {
+                attempt(LoopTie::First).map_err(|_| error)
+            }
+            _ => Err(error),
+        })
+    }
+
     /// The path's trail, the target's distance (scaled units) and the source it ends at.
-    fn trace(&self, target: &SurfacePoint) -> Result<(Trail<S>, S, SourceId), TraceError> {
+    fn trace(
+        &self,
+        target: &SurfacePoint,
+        tie: LoopTie,
+    ) -> Result<(Trail<S>, S, SourceId), TraceError> {
         let target = target.validated(self.mesh())?;
         let best = self.best_at(&target).ok_or(TraceError::Unreachable)?;
         let distance = best.distance;
         let mut simplices = Trail::start(target);
         let mut via = best.via;
         let mut start = None;
+        // The vertices the walk left, in order, and a vertex to leave again with the arrivals
+        // refused there.
+        let mut departures: Vec<Departure<'_, S>> = Vec::new();
+        let mut retry: Option<(VertexId, Vec<&Wedge<S>>)> = None;
         let budget = 4 * self.mesh().face_count() + 16;
         for _ in 0..budget {
             let pseudo_source = match via {
                 Via::Vertex(v) => {
+                    let refused = match retry.take() {
+                        Some((u, refused)) if u == v => refused,
+                        _ => Vec::new(),
+                    };
+                    let trail_len = simplices.len();
                     simplices.push(SurfacePoint::Vertex(v));
                     // The path ends at the vertex if it is a source; it may hop at no cost to a
                     // vertex at the same place (across edges of length zero): to a source, or
@@ -209,12 +243,28 @@ impl<S: Scalar> GeodesicField<'_, S> {
                         .iter()
                         .enumerate()
                         .filter_map(|(i, &(u, _))| {
-                            self.arrival_at_vertex(u, &twins).map(|b| (i, b))
+                            self.arrival_at_vertex(u, &twins, &refused).map(|b| (i, b))
                         })
                         .min_by(|(_, a), (_, b)| self.better_arrival(a, b))
-                        .ok_or(TraceError::Unreachable)?;
+                        .ok_or_else(|| {
+                            if refused.is_empty() {
+                                TraceError::Unreachable
+                            } else {
+                                TraceError::Lost {
+                                    near: format!("{v}"),
+                                }
+                            }
+                        })?;
                     hop(&mut simplices, i);
                     let u = twins[i].0;
+                    if let Via::Wedge { edge, wedge, .. } = arrival.via {
+                        departures.push(Departure {
+                            vertex: v,
+                            trail_len,
+                            chosen: &self.wedges.on(edge)[wedge],
+                            refused,
+                        });
+                    }
                     via = arrival.via;
                     start = Some(u);
                     continue;
@@ -254,6 +304,25 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     }
                 }
             };
+            if let PseudoSource::Vertex(u) = pseudo_source {
+                if self.was_passed(u, &simplices.points) {
+                    // A shortest path passes a point once: the walk came round to a vertex it
+                    // passed (vertices an ulp apart, each on the other's rounded way). On the
+                    // loop, the arrival taken at the nearest vertex to the sources cannot be
+                    // right (it goes by vertices no nearer): it is refused there, and the trail
+                    // taken up again from that vertex.
+                    let mut d = self
+                        .loop_departure(u, &mut departures, tie)
+                        .ok_or_else(|| TraceError::Lost {
+                            near: format!("{u}"),
+                        })?;
+                    simplices.truncate(d.trail_len);
+                    d.refused.push(d.chosen);
+                    via = Via::Vertex(d.vertex);
+                    retry = Some((d.vertex, d.refused));
+                    continue;
+                }
+            }
             match pseudo_source {
                 PseudoSource::Source(k) => {
                     simplices.push(self.sources[k.index()]);
@@ -304,7 +373,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
 
     /// The vertex and those at the same place, joined to it by edges of length zero, each
     /// with the index of the one it was found from (`None` for the vertex itself).
-    fn twins(&self, v: VertexId) -> Vec<(VertexId, Option<usize>)> {
+    pub(super) fn twins(&self, v: VertexId) -> Vec<(VertexId, Option<usize>)> {
         let mut group = vec![(v, None)];
         let mut next = 0;
         while next < group.len() {
@@ -338,7 +407,8 @@ impl<S: Scalar> GeodesicField<'_, S> {
             .map(|k| SourceId(k as u32))
     }
 
-    /// How a vertex was reached, excluding the wedges it (or a twin, in `twins`) emitted itself: wedges on the opposite
+    /// How a vertex was reached, excluding the wedges it (or a twin, in `twins`) emitted itself
+    /// and those `refused` there: wedges on the opposite
     /// edges of its faces that see it from beyond, or, only where strictly better, wedges along
     /// its edges that cover it (a path arriving along an edge). The first kind is preferred on
     /// ties because the straight way back then starts inside a known face; a wedge along an edge
@@ -347,9 +417,14 @@ impl<S: Scalar> GeodesicField<'_, S> {
         &self,
         v: VertexId,
         twins: &[(VertexId, Option<usize>)],
+        refused: &[&Wedge<S>],
     ) -> Option<Best<S>> {
-        // The wedges a vertex, or one at its place, emitted itself lead nowhere new.
-        let own = |w: &Wedge<S>| matches!(w.pseudo_source, PseudoSource::Vertex(u) if twins.iter().any(|t| t.0 == u));
+        // The wedges a vertex, or one at its place, emitted itself lead nowhere new. Wedges are
+        // told apart by their place in the field's lists.
+        let own = |w: &Wedge<S>| {
+            matches!(w.pseudo_source, PseudoSource::Vertex(u) if twins.iter().any(|t| t.0 == u))
+                || refused.iter().any(|r| std::ptr::eq(*r, w))
+        };
         let mut best: Option<Best<S>> = None;
         let mut consider = |found: Option<Best<S>>| {
             if let Some(found) = found {
@@ -776,6 +851,16 @@ impl<S: Scalar> Trail<S> {
             points: vec![target],
             offsets: vec![None],
         }
+    }
+
+    fn len(&self) -> usize {
+        self.points.len()
+    }
+
+    /// Drops the points after the first `len`.
+    fn truncate(&mut self, len: usize) {
+        self.points.truncate(len);
+        self.offsets.truncate(len);
     }
 
     /// Appends a point, unless it repeats the last one.

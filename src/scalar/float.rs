@@ -31,8 +31,9 @@ impl FloatTolerance {
     /// the distances at hand, 1e-9 gave distances 2 % short, and on edges 1e8 times longer,
     /// 1e-12 gave 3e-7.
     pub const WITHIN: f64 = 64.0 * f64::EPSILON;
-    /// Two wedges whose pseudo-sources and sigmas agree to this fraction of the range's scale
-    /// have the same distance function: eq. (2) has infinitely many solutions.
+    /// Two wedges whose pseudo-sources and sigmas agree to this fraction of their size have
+    /// the same distance function: eq. (2) has infinitely many solutions. Two images of one
+    /// pseudo-source that agree to this fraction of their range's scale are one image.
     pub const SAME_SOURCE: f64 = 1e-12;
     /// A root of eq. (2) solves eq. (1) if the two distances there agree to this fraction.
     pub const ROOT_RESIDUAL: f64 = 1e-9;
@@ -112,22 +113,30 @@ impl Scalar for f64 {
         *x >= lo - slack && *x <= hi + slack
     }
 
+    /// Within [`FloatTolerance::SAME_SOURCE`] of the size of the values compared (the
+    /// pseudo-sources' coordinates and sigmas), which is what their constructions are known
+    /// to; not of the range's length: on a range 2e8 long, pseudo-sources 1e-6 apart, the
+    /// nearer lower by 1e-6 all along, were taken for one and the higher kept the range.
     fn same_distance_function(
         a: &SourceDistance<f64>,
         b: &SourceDistance<f64>,
-        scale: &f64,
+        _scale: &f64,
     ) -> bool {
-        let same = FloatTolerance::SAME_SOURCE * scale.max(a.y.abs()).max(b.y.abs());
-        (a.x - b.x).abs() <= same
-            && (a.sigma - b.sigma).abs() <= same
-            && (a.y.abs() - b.y.abs()).abs() <= same
+        let size = [a.x, b.x, a.y, b.y, a.sigma, b.sigma]
+            .iter()
+            .fold(0.0f64, |m, c| m.max(c.abs()));
+        agree(a, b, FloatTolerance::SAME_SOURCE * size)
     }
 
-    /// As [`Scalar::same_distance_function`], whose tolerance already covers two chains of
-    /// constructions ([`FloatTolerance::SAME_SOURCE`]).
+    /// Within [`FloatTolerance::SAME_SOURCE`] of the range's scale (or of the images'
+    /// distance from the edge): two chains of constructions of one pseudo-source's image.
     #[inline]
     fn same_image(a: &SourceDistance<f64>, b: &SourceDistance<f64>, scale: &f64) -> bool {
-        f64::same_distance_function(a, b, scale)
+        agree(
+            a,
+            b,
+            FloatTolerance::SAME_SOURCE * scale.max(a.y.abs()).max(b.y.abs()),
+        )
     }
 
     /// The roots by [`roots_in`]; on each stretch between them, the lower function where the
@@ -255,6 +264,13 @@ fn roots_in(
         [r, s] => BisectorRoots::Two(r, s),
         _ => unreachable!("a quadratic has at most two roots"),
     }
+}
+
+/// Whether two distance functions' pseudo-sources (`x`, `|y|`) and sigmas agree within `same`.
+fn agree(a: &SourceDistance<f64>, b: &SourceDistance<f64>, same: f64) -> bool {
+    (a.x - b.x).abs() <= same
+        && (a.sigma - b.sigma).abs() <= same
+        && (a.y.abs() - b.y.abs()).abs() <= same
 }
 
 /// Compares `a` and `b`, calling them equal when they differ by at most `relative` times the
