@@ -43,9 +43,10 @@ pub mod subdivision;
 
 pub use mesh::{EdgeId, FaceId, MeshError, Side, SourceId, TriMesh, ValidationReport, VertexId};
 pub use mmp::{
-    geodesic_distances, propagate, propagate_shared, propagate_with_progress, ExactPath,
-    GeodesicField, GeodesicPath, PointError, PropagateOptions, PseudoSource, Stats, SurfacePoint,
-    TraceError, Wedge,
+    geodesic_distances, propagate, propagate_shared, propagate_vertices,
+    propagate_vertices_with_progress, propagate_with_progress, ExactPath, GeodesicField,
+    GeodesicPath, PointError, PropagateOptions, PseudoSource, Stats, SurfacePoint, TraceError,
+    VertexField, Wedge,
 };
 pub use scalar::Scalar;
 

@@ -2,7 +2,7 @@
 
 use super::{validate, MatrixError, MatrixOptions, MatrixRow, MatrixSummary};
 use crate::mesh::{TriMesh, VertexId};
-use crate::mmp::{propagate, PropagateOptions, SurfacePoint};
+use crate::mmp::{propagate_vertices, PropagateOptions, SurfacePoint};
 use crate::scalar::Scalar;
 use rayon::prelude::*;
 use std::sync::mpsc;
@@ -47,7 +47,7 @@ pub fn distance_matrix<S: Scalar, E>(
     propagate_options.precision_cap = options.precision_cap;
     let row = |index: usize| -> MatrixRow {
         let source = std::slice::from_ref(&sources[index]);
-        let field = propagate::<S>(mesh, source, &propagate_options)
+        let field = propagate_vertices::<S>(mesh, source, &propagate_options)
             .expect("the sources and targets were validated");
         MatrixRow {
             index,

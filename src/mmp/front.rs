@@ -7,7 +7,7 @@ use super::source::SurfacePoint;
 use super::unfold::Unfolding;
 use super::wedge::Wedge;
 use super::wedge_lists::WedgeRef;
-use crate::mesh::{SourceId, TriMesh, VertexId};
+use crate::mesh::{EdgeId, SourceId, TriMesh, VertexId};
 use crate::scalar::Scalar;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -28,6 +28,32 @@ pub(crate) struct VertexDistance<S: Scalar> {
 pub(crate) enum EventKind {
     Wedge(WedgeRef),
     Vertex(VertexId),
+}
+
+/// An edge whose wedges may no longer be needed once the front reaches `key`
+/// ([`WedgeLists::close`](super::wedge_lists::WedgeLists::close)).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Closing {
+    pub(crate) key: f64,
+    pub(crate) edge: EdgeId,
+}
+
+impl PartialEq for Closing {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+impl Eq for Closing {}
+impl PartialOrd for Closing {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Closing {
+    /// Reversed, so that `BinaryHeap` pops the nearest first.
+    fn cmp(&self, other: &Self) -> Ordering {
+        other.key.total_cmp(&self.key)
+    }
 }
 
 /// An event of the queue, keyed by the `f64` value of its distance.
@@ -61,6 +87,9 @@ pub(crate) struct Front<S: Scalar> {
     /// Whether a vertex's distance improved since it last acted as a pseudo-source.
     pending_emission: Vec<bool>,
     queue: BinaryHeap<Event>,
+    /// Edges to close, apart from the events so that they do not change the order in which
+    /// events of equal keys leave `queue` (ties that the vertices' last bits depend on).
+    closing: BinaryHeap<Closing>,
     /// Vertices with a distance.
     reached: usize,
     /// The longest the queue has been right after a wedge joined it.
@@ -74,6 +103,7 @@ impl<S: Scalar> Front<S> {
             vertices: vec![None; vertex_count],
             pending_emission: vec![false; vertex_count],
             queue: BinaryHeap::new(),
+            closing: BinaryHeap::new(),
             reached: 0,
             peak_queue: 0,
         }
@@ -82,6 +112,15 @@ impl<S: Scalar> Front<S> {
     /// The nearest event, taken from the queue.
     pub(crate) fn pop(&mut self) -> Option<Event> {
         self.queue.pop()
+    }
+
+    /// The next edge to close with the front at `key`: one asked for at `key` or before.
+    pub(crate) fn pop_closing(&mut self, key: f64) -> Option<Closing> {
+        if self.closing.peek()?.key <= key {
+            self.closing.pop()
+        } else {
+            None
+        }
     }
 
     /// Puts a popped event back into the queue at a later key.
@@ -97,6 +136,11 @@ impl<S: Scalar> Front<S> {
             kind: EventKind::Wedge(at),
         });
         self.peak_queue = self.peak_queue.max(self.queue.len());
+    }
+
+    /// Asks, once the front reaches `key`, whether the wedges of edge `e` are still needed.
+    pub(crate) fn push_closing(&mut self, edge: EdgeId, key: f64) {
+        self.closing.push(Closing { key, edge });
     }
 
     /// The longest the queue has been after a wedge joined it.

@@ -20,6 +20,7 @@ mod stop;
 mod trace_back;
 mod trace_loop;
 mod unfold;
+mod vertex_field;
 mod wedge;
 mod wedge_lists;
 
@@ -33,4 +34,5 @@ pub use propagate::{
 pub use source::{PointError, SurfacePoint};
 pub use stats::{Eq2Counts, Eq2Decision, Stats};
 pub use trace_back::{ExactPath, GeodesicPath, TraceError};
+pub use vertex_field::{propagate_vertices, propagate_vertices_with_progress, VertexField};
 pub use wedge::{PseudoSource, Wedge};

@@ -14,6 +14,7 @@ use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::stop::StopPoints;
 use super::unfold::{FaceLayout, Unfolding};
+use super::vertex_field::propagate_vertices;
 use super::wedge::{PseudoSource, Wedge};
 use super::wedge_lists::{Arrivals, Due, WedgeLists, WedgeRef};
 use crate::mesh::{EdgeId, FaceId, Side, SourceId, TriMesh, VertexId};
@@ -52,6 +53,9 @@ pub struct PropagateOptions {
     /// as decided by the backend; the front is the queue's key, the `f64` value of a distance.
     /// A stop point that cannot be reached lets the run go on to its end. Empty: no early stop.
     pub stop_points: Vec<SurfacePoint>,
+    /// Only vertex distances are wanted ([`propagate_vertices`](crate::propagate_vertices)):
+    /// the wedges of an edge are given up as soon as no later wedge can win a point of it.
+    pub(crate) vertices_only: bool,
 }
 
 impl PropagateOptions {
@@ -151,8 +155,9 @@ pub fn propagate_shared<S: Scalar>(
 }
 
 /// The geodesic distance of every vertex, in file order, from the nearest of `sources`
-/// (`f64::INFINITY` where unreachable): [`propagate`] and
-/// [`GeodesicField::vertex_distances`] in one call, for the common case.
+/// (`f64::INFINITY` where unreachable): [`propagate_vertices`](crate::propagate_vertices) and
+/// [`VertexField::vertex_distances`](crate::VertexField::vertex_distances) in one call, for
+/// the common case.
 ///
 /// # Errors
 /// As [`propagate`].
@@ -169,7 +174,7 @@ pub fn geodesic_distances<S: Scalar>(
     sources: &[SurfacePoint],
     options: &PropagateOptions,
 ) -> Result<Vec<f64>, PointError> {
-    Ok(propagate::<S>(mesh, sources, options)?.vertex_distances())
+    Ok(propagate_vertices::<S>(mesh, sources, options)?.vertex_distances())
 }
 
 /// [`propagate`], calling `progress` now and then with how far it got.
@@ -287,7 +292,11 @@ impl<'m, S: Scalar> Engine<'m, S> {
             unfolding,
             sources,
             paths,
-            wedges: WedgeLists::new(mesh.edge_count(), options.record_decisions),
+            wedges: WedgeLists::new(
+                mesh.edge_count(),
+                options.record_decisions,
+                options.vertices_only,
+            ),
             front: Front::new(mesh.vertex_count()),
             max_distance,
             stop,
@@ -298,6 +307,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
     fn run(&mut self, progress: &mut impl FnMut(&Progress)) {
         let mut events = 0u64;
         while let Some(event) = self.front.pop() {
+            while let Some(c) = self.front.pop_closing(event.key) {
+                self.wedges
+                    .close(c.edge, c.key, self.unfolding.length(c.edge));
+            }
             if event.key > self.max_distance {
                 break;
             }
@@ -325,6 +338,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     Due::Now(wedge, kept) => {
                         self.stats.wedges_propagated += 1;
                         self.propagate_wedge(&wedge, &kept);
+                        if let Some(key) = self.wedges.closing_key(at.edge()) {
+                            self.front.push_closing(at.edge(), key);
+                        }
                     }
                 },
                 EventKind::Vertex(v) => {

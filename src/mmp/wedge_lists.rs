@@ -90,6 +90,18 @@ impl<S: Scalar> Entry<S> {
         self.kept = std::mem::take(&mut self.kept).joined(next.kept);
     }
 
+    /// The largest distance the wedge gives on its range, in `f64` (at an end: the distance
+    /// function is convex).
+    fn farthest(&self) -> f64 {
+        let (x, y, sigma) = (
+            self.source_x.to_f64(),
+            self.source_y.to_f64(),
+            self.sigma.to_f64(),
+        );
+        let at = |t: f64| sigma + ((t - x) * (t - x) + y * y).sqrt();
+        at(self.b0.to_f64()).max(at(self.b1.to_f64()))
+    }
+
     /// The wedge, on `edge`.
     fn wedge(&self, edge: EdgeId) -> Wedge<S> {
         Wedge {
@@ -194,9 +206,19 @@ fn find_near<S: Scalar>(list: &[Entry<S>], place: usize, serial: u32) -> Option<
     None
 }
 
+/// How far beyond the largest distance of an edge's wedges the front must be before they are
+/// given up ([`WedgeLists::close`]): `2^-20` of it, far above the rounding of the `f64`
+/// distances compared there (slivers 1e8 long put float distances 1e-8 off) and above every
+/// backend's tie between distances, so that a wedge arriving later is higher than the edge's
+/// wedges everywhere, by every backend's decision. The wedges are held that much longer.
+const CLOSING_MARGIN: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
+
 /// The wedges of every edge of a running propagation.
 pub(crate) struct WedgeLists<S: Scalar> {
     lists: Vec<Vec<Entry<S>>>,
+    /// When only vertex distances are asked for, whether each edge's wedges were given up
+    /// ([`WedgeLists::close`]); `None`: every wedge is kept to the end.
+    closed: Option<Vec<bool>>,
     /// The serial of each edge's next wedge.
     serials: Vec<u32>,
     /// Wedges in all lists.
@@ -208,9 +230,12 @@ pub(crate) struct WedgeLists<S: Scalar> {
 
 impl<S: Scalar> WedgeLists<S> {
     /// No wedge yet on any of `edge_count` edges.
-    pub(crate) fn new(edge_count: usize, record_decisions: bool) -> Self {
+    /// `vertices_only`: only vertex distances are asked for, so the wedges of an edge may be
+    /// given up once no later wedge can win a point of it ([`WedgeLists::close`]).
+    pub(crate) fn new(edge_count: usize, record_decisions: bool, vertices_only: bool) -> Self {
         WedgeLists {
             lists: std::iter::repeat_with(Vec::new).take(edge_count).collect(),
+            closed: vertices_only.then(|| vec![false; edge_count]),
             serials: vec![0; edge_count],
             entries: 0,
             record_decisions,
@@ -255,6 +280,44 @@ impl<S: Scalar> WedgeLists<S> {
         Due::Now(wedge, kept)
     }
 
+    /// When only vertex distances are asked for and every wedge of edge `e` has been
+    /// propagated: the front's key at which they may be given up ([`WedgeLists::close`]).
+    pub(crate) fn closing_key(&self, e: EdgeId) -> Option<f64> {
+        self.closed.as_ref()?;
+        let list = &self.lists[e.index()];
+        if list.is_empty() || list.iter().any(|x| x.queued) {
+            return None;
+        }
+        Some(list.iter().map(Entry::farthest).fold(0.0, f64::max) * CLOSING_MARGIN)
+    }
+
+    /// Gives up the wedges of edge `e` (of length `length`) if the front, at `key`, is beyond
+    /// every distance they give ([`CLOSING_MARGIN`]), all of them have been propagated and they
+    /// cover the edge without a gap that has extent. A wedge arriving later is no nearer than
+    /// the front, so it would lose every point of the edge to them: it is dropped unseen, and
+    /// the vertex distances are those of a run that keeps every wedge. What is given up is the
+    /// distance field inside the faces, which vertex distances do not need.
+    pub(crate) fn close(&mut self, e: EdgeId, key: f64, length: &S) {
+        let Some(closed) = self.closed.as_mut() else {
+            return;
+        };
+        let list = &mut self.lists[e.index()];
+        let (Some(first), Some(last)) = (list.first(), list.last()) else {
+            return;
+        };
+        let covered = !S::has_extent(&S::zero(), &first.b0, length)
+            && !S::has_extent(&last.b1, length, length)
+            && list
+                .windows(2)
+                .all(|p| !S::has_extent(&p[0].b1, &p[1].b0, length));
+        let passed = list.iter().map(Entry::farthest).fold(0.0, f64::max) * CLOSING_MARGIN <= key;
+        if covered && passed && list.iter().all(|x| !x.queued) {
+            self.entries -= list.len();
+            *list = Vec::new();
+            closed[e.index()] = true;
+        }
+    }
+
     /// The final wedges of every edge, each list exactly sized, moved out of their entries.
     pub(crate) fn into_edge_wedges(self) -> EdgeWedges<S> {
         EdgeWedges::new(
@@ -283,7 +346,8 @@ impl<S: Scalar> WedgeLists<S> {
             edge: Some(e.0),
             what: "wedge intersection (eq. 2)",
         });
-        if !S::has_extent(&w.b0, &w.b1, length) {
+        let closed = self.closed.as_ref().is_some_and(|c| c[e.index()]);
+        if closed || !S::has_extent(&w.b0, &w.b1, length) {
             return;
         }
         let list = &self.lists[e.index()];
@@ -516,7 +580,7 @@ mod tests {
 
     #[test]
     fn an_event_finds_its_wedge_after_others_moved_it_and_is_stale_once_it_left() {
-        let mut lists = WedgeLists::<f64>::new(1, false);
+        let mut lists = WedgeLists::<f64>::new(1, false, false);
         let (mut stats, mut events) = (Stats::default(), Events::default());
         let edge = (&1.0, [VertexId(0), VertexId(1)]);
         let mut insert = |lists: &mut WedgeLists<f64>, w: Wedge<f64>, events: &mut Events| {

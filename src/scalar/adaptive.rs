@@ -201,19 +201,32 @@ fn cmp(a: f64, b: f64) -> Ordering {
     a.partial_cmp(&b).unwrap_or(Ordering::Equal)
 }
 
-/// The `f64` positions of the crossings the filtered decision found, from exact values:
-/// eq. (2)'s coefficients and its discriminant `beta^2 G G'` ([`roots::source_gap`]) exact in
-/// rationals, each rounded once, then the cancellation-free formula; a position is then good to
-/// a few ulps of its distance from the range's start, and it is kept inside the range, in
-/// order. The filter's own coefficients carry errors that it bounds for their signs only: on a
-/// near-double root or a nearly vanishing `A` they placed roots far outside the range, and the
-/// lower wedge, certain on each stretch between the exact roots, went to the wrong places.
+/// The `f64` positions of the crossings the filtered decision found, from values known to a
+/// few ulps: eq. (2)'s coefficients and its discriminant `beta^2 G G'` ([`roots::source_gap`])
+/// in `f64` with an error bound where that bound is that small (a well-conditioned root, most
+/// meetings), else in double-double or exact rationals, each rounded once; then the
+/// cancellation-free formula. A position is then good to a few ulps of its distance from the
+/// range's start, and it is kept inside the range, in order. The filter's own coefficients
+/// carry errors that it bounds for their signs only: on a near-double root or a nearly
+/// vanishing `A` they placed roots far outside the range, and the lower wedge, certain on each
+/// stretch between the exact roots, went to the wrong places.
 fn root_positions(
     a: &SourceDistance<Adaptive>,
     b: &SourceDistance<Adaptive>,
     crossings: roots::Crossings<f64>,
     [lo, hi]: [f64; 2],
 ) -> BisectorRoots<f64> {
+    // Most meetings have no crossing inside the range: nothing to place.
+    match crossings {
+        roots::Crossings::None
+        | roots::Crossings::Quadratic {
+            smaller: false,
+            larger: false,
+            ..
+        } => return BisectorRoots::None,
+        roots::Crossings::Infinite => return BisectorRoots::Infinite,
+        _ => {}
+    }
     // In units where the offsets from the range's start are near 1 (a power of two, exact
     // unless it makes a value subnormal): eq. (2)'s coefficients are of degree up to 4 in
     // lengths, its discriminant 6, and would leave f64's range.
@@ -223,9 +236,12 @@ fn root_positions(
         .fold(hi - lo, |m, v| m.max(v.abs()));
     let unit = normalizing_power(size);
     let positions = |u: [f64; 2]| u.map(|u| (lo + u / unit).clamp(lo, hi));
-    // Double-double values first, known to within 2^-60 (of themselves, or absolutely below
-    // 1: the inputs are of unit size here); exact rationals where they are not.
-    let [r, s] = scaled_positions(a, b, &crossings, lo, unit, DoubleDouble::accurate_f64)
+    // `f64` values with their error bounds first, taken where they are known to a few ulps
+    // (a well-conditioned root); then double-double values, known to within 2^-60 (of
+    // themselves, or absolutely below 1: the inputs are of unit size here); exact rationals
+    // where neither is accurate.
+    let [r, s] = scaled_positions(a, b, &crossings, lo, unit, ErrorBound::accurate_f64)
+        .or_else(|| scaled_positions(a, b, &crossings, lo, unit, DoubleDouble::accurate_f64))
         .unwrap_or_else(|| {
             scaled_positions(a, b, &crossings, lo, unit, |q: Q| Some(q.to_f64()))
                 .expect("exact rationals give every value")

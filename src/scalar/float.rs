@@ -153,12 +153,12 @@ impl Scalar for f64 {
         let mut lower = [Lower::Neither; 3];
         if roots != BisectorRoots::Infinite {
             let cuts = match roots {
-                BisectorRoots::One(r) | BisectorRoots::Touch(r) => vec![r],
-                BisectorRoots::Two(r, s) => vec![r, s],
-                _ => vec![],
+                BisectorRoots::One(r) | BisectorRoots::Touch(r) => [Some(r), None],
+                BisectorRoots::Two(r, s) => [Some(r), Some(s)],
+                _ => [None, None],
             };
             let mut start = *lo;
-            for (i, end) in cuts.iter().copied().chain([*hi]).enumerate() {
+            for (i, end) in cuts.into_iter().flatten().chain([*hi]).enumerate() {
                 lower[i] = lower_on(a, b, [start, end], [*lo, *hi], FloatTolerance::DISTANCE);
                 start = end;
             }

@@ -3,7 +3,7 @@
 use crate::{certified_digits, emit, with_backend, Backend, Common, Digits};
 use clap::{Args, ValueEnum};
 use exact_geodesics::scalar::Real;
-use exact_geodesics::{GeodesicField, Scalar, SourceId, VertexId};
+use exact_geodesics::{Scalar, SourceId, VertexField, VertexId};
 use std::fmt::Write;
 use std::path::PathBuf;
 
@@ -36,15 +36,15 @@ enum Distance {
 pub fn run(args: &DistanceArgs) -> Result<(), String> {
     let job = args.common.job()?;
     let rows = match args.digits.checked(job.backend)? {
-        Some(digits) => exact_rows(&job.field::<Real>()?, digits)?,
-        None => with_backend!(job.backend, S => float_rows(&job.field::<S>()?)),
+        Some(digits) => exact_rows(&job.vertex_field::<Real>()?, digits)?,
+        None => with_backend!(job.backend, S => float_rows(&job.vertex_field::<S>()?)),
     };
     emit(args.out.as_ref(), &render(rows, args.format))
 }
 
 type Row = (u32, Distance, Option<SourceId>);
 
-fn float_rows<S: Scalar>(field: &GeodesicField<'_, S>) -> Vec<Row> {
+fn float_rows<S: Scalar>(field: &VertexField<'_, S>) -> Vec<Row> {
     (0..field.mesh().vertex_count() as u32)
         .map(VertexId)
         .map(|v| {
@@ -54,7 +54,7 @@ fn float_rows<S: Scalar>(field: &GeodesicField<'_, S>) -> Vec<Row> {
         .collect()
 }
 
-fn exact_rows(field: &GeodesicField<'_, Real>, digits: u32) -> Result<Vec<Row>, String> {
+fn exact_rows(field: &VertexField<'_, Real>, digits: u32) -> Result<Vec<Row>, String> {
     (0..field.mesh().vertex_count() as u32)
         .map(VertexId)
         .map(|v| {

@@ -19,9 +19,11 @@ mod verify;
 mod wedges;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use exact_geodesics::mmp::Progress;
 use exact_geodesics::scalar::exact;
 use exact_geodesics::{
-    propagate_with_progress, GeodesicField, PropagateOptions, Scalar, SurfacePoint, TriMesh,
+    propagate_vertices_with_progress, propagate_with_progress, GeodesicField, PointError,
+    PropagateOptions, Scalar, Stats, SurfacePoint, TriMesh, VertexField,
 };
 use std::io::Write;
 use std::path::PathBuf;
@@ -224,25 +226,50 @@ impl Job {
     /// Propagates with the chosen backend, showing progress on a terminal. A run with
     /// uncertified decisions is an error with `--require-certified`, else a warning.
     fn field<S: Scalar>(&self) -> Result<GeodesicField<'_, S>, String> {
-        let bar = progress::bar(self.mesh.vertex_count());
-        let field = propagate_with_progress(&self.mesh, &self.sources, &self.options, |p| {
-            progress::update(&bar, p)
-        })
-        .map_err(|e| e.to_string())?;
-        bar.finish_and_clear();
-        if !field.is_certified() {
-            let counts = &field.stats().backend;
-            let message = format!(
-                "{} of {} decisions of the {} backend are not certified: the result may be \
-                 wrong where they fell (`stats` lists the first of them; a larger \
-                 --precision-cap may settle them)",
-                counts.uncertified,
-                counts.decisions,
-                self.backend.name()
-            );
-            report_uncertified(message, self.require_certified)?;
-        }
+        let field = self.with_progress(|progress| {
+            propagate_with_progress(&self.mesh, &self.sources, &self.options, progress)
+        })?;
+        self.check_certified(field.stats())?;
         Ok(field)
+    }
+
+    /// [`Job::field`] for the vertices' distances only, which keeps only the wedges near the
+    /// front ([`propagate_vertices_with_progress`]).
+    fn vertex_field<S: Scalar>(&self) -> Result<VertexField<'_, S>, String> {
+        let field = self.with_progress(|progress| {
+            propagate_vertices_with_progress(&self.mesh, &self.sources, &self.options, progress)
+        })?;
+        self.check_certified(field.stats())?;
+        Ok(field)
+    }
+
+    /// Runs a propagation with a progress bar on a terminal.
+    fn with_progress<T>(
+        &self,
+        run: impl FnOnce(&mut dyn FnMut(&Progress)) -> Result<T, PointError>,
+    ) -> Result<T, String> {
+        let bar = progress::bar(self.mesh.vertex_count());
+        let result = run(&mut |p| progress::update(&bar, p)).map_err(|e| e.to_string())?;
+        bar.finish_and_clear();
+        Ok(result)
+    }
+
+    /// An error with `--require-certified`, else a warning, if the run left decisions
+    /// uncertified.
+    fn check_certified(&self, stats: &Stats) -> Result<(), String> {
+        let counts = &stats.backend;
+        if counts.uncertified == 0 {
+            return Ok(());
+        }
+        let message = format!(
+            "{} of {} decisions of the {} backend are not certified: the result may be \
+             wrong where they fell (`stats` lists the first of them; a larger \
+             --precision-cap may settle them)",
+            counts.uncertified,
+            counts.decisions,
+            self.backend.name()
+        );
+        report_uncertified(message, self.require_certified)
     }
 }
 
