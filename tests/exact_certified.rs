@@ -128,6 +128,22 @@ fn ties_of_congruent_paths_are_certified_and_agree_with_f64() {
     }
 }
 
+/// A checkerboard terrain of 2 x 2 unit squares, the corners of one colour raised by 1/2: its
+/// saddles' wedges meet the wedges that lit them where two square roots of one value in
+/// different radicals cancel (`c1 M1 + c2 M2`, the symbols not independent), proved zero by
+/// their squares. Before, this run from the middle vertex left 3 decisions uncertified.
+#[test]
+fn cancelling_radicals_of_a_checkerboard_are_proved_by_their_squares() {
+    let positions: Vec<[f64; 3]> = (0..3)
+        .flat_map(|j| {
+            (0..3).map(move |i| [f64::from(i), f64::from(j), 0.5 * f64::from((i + j) % 2)])
+        })
+        .collect();
+    let mesh = TriMesh::new(positions, lattice_faces(2)).expect("a terrain");
+    let source = SurfacePoint::Vertex(VertexId(4));
+    assert_certified_and_agrees_with_f64(&mesh, source, "checkerboard from its middle");
+}
+
 /// The faces of an `n` x `n` grid of squares whose `(n + 1)^2` vertices are numbered row by
 /// row, each square split by its diagonal from its first corner.
 fn lattice_faces(n: u32) -> Vec<[u32; 3]> {

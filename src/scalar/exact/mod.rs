@@ -169,7 +169,7 @@ impl Real {
         if hi.cmp0() == Some(Ordering::Less) {
             return (Sign::Negative, Certificate::Refinement);
         }
-        if normal_form::normal_form(node).is_some_and(|nf| nf.is_zero()) {
+        if normal_form::zero_by_squares(node) {
             return (
                 Sign::Zero,
                 Certificate::CertifiedZero(ZeroProof::NormalForm),

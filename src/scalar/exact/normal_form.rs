@@ -309,6 +309,46 @@ impl NormalForm {
     }
 }
 
+impl NormalForm {
+    /// Whether the form is zero, also where its symbols are not independent, for a form of two
+    /// terms `c1 M1 + c2 M2` over square roots: they are positive, so the form is zero exactly
+    /// when the coefficients have opposite signs and `c1^2 M1^2 = c2^2 M2^2`, asked in turn of
+    /// that difference (a form over the radicands, `depth` times at most). A zero is a proof;
+    /// `false` proves nothing.
+    fn is_zero_by_squares(&self, depth: u32) -> bool {
+        if self.is_zero() {
+            return true;
+        }
+        let mut terms = self.0.iter();
+        let (Some((m1, c1)), Some((m2, c2)), None) = (terms.next(), terms.next(), terms.next())
+        else {
+            return false;
+        };
+        if depth == 0 || c1.cmp0() == c2.cmp0() {
+            return false;
+        }
+        let square = |m: &Monomial, c: &Rational| -> Option<NormalForm> {
+            let mut form = NormalForm::rational(c.clone() * c);
+            for &symbol in m {
+                form = form.mul(&square_of(symbol)?)?;
+            }
+            Some(form)
+        };
+        let (Some(a), Some(b)) = (square(m1, c1), square(m2, c2)) else {
+            return false;
+        };
+        a.add(&b, -1)
+            .is_some_and(|difference| difference.is_zero_by_squares(depth - 1))
+    }
+}
+
+/// Whether the node's normal form is zero, by [`NormalForm::is_zero_by_squares`] where its
+/// symbols may not be independent.
+pub(crate) fn zero_by_squares(node: &Arc<Node>) -> bool {
+    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
+    memoized(node).is_some_and(|nf| nf.is_zero_by_squares(4))
+}
+
 /// The primes whose squares are taken out of an integer radicand and whose quadratic
 /// characters make its square class ([`square_class`]).
 const CLASS_PRIMES: [u32; 54] = [
