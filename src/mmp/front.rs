@@ -30,56 +30,37 @@ pub(crate) enum EventKind {
     Vertex(VertexId),
 }
 
-/// An edge whose wedges may no longer be needed once the front reaches `key`
-/// ([`WedgeLists::close`](super::wedge_lists::WedgeLists::close)).
+/// Something due when the front reaches `key`, ordered reversed, so that `BinaryHeap` pops the
+/// nearest first (equal keys compare equal: the heap's own order decides between them).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Closing {
+pub(crate) struct AtKey<T> {
     pub(crate) key: f64,
-    pub(crate) edge: EdgeId,
+    pub(crate) what: T,
 }
 
-impl PartialEq for Closing {
+impl<T> PartialEq for AtKey<T> {
     fn eq(&self, other: &Self) -> bool {
         self.cmp(other) == Ordering::Equal
     }
 }
-impl Eq for Closing {}
-impl PartialOrd for Closing {
+impl<T> Eq for AtKey<T> {}
+impl<T> PartialOrd for AtKey<T> {
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
         Some(self.cmp(other))
     }
 }
-impl Ord for Closing {
-    /// Reversed, so that `BinaryHeap` pops the nearest first.
+impl<T> Ord for AtKey<T> {
     fn cmp(&self, other: &Self) -> Ordering {
         other.key.total_cmp(&self.key)
     }
 }
 
 /// An event of the queue, keyed by the `f64` value of its distance.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Event {
-    pub(crate) key: f64,
-    pub(crate) kind: EventKind,
-}
+pub(crate) type Event = AtKey<EventKind>;
 
-impl PartialEq for Event {
-    fn eq(&self, other: &Self) -> bool {
-        self.cmp(other) == Ordering::Equal
-    }
-}
-impl Eq for Event {}
-impl PartialOrd for Event {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-impl Ord for Event {
-    /// Reversed, so that `BinaryHeap` pops the nearest event first.
-    fn cmp(&self, other: &Self) -> Ordering {
-        other.key.total_cmp(&self.key)
-    }
-}
+/// An edge whose wedges may no longer be needed once the front reaches `key`
+/// ([`WedgeLists::close`](super::wedge_lists::WedgeLists::close)).
+pub(crate) type Closing = AtKey<EdgeId>;
 
 /// The queue of events and the vertices' distances.
 pub(crate) struct Front<S: Scalar> {
@@ -133,14 +114,14 @@ impl<S: Scalar> Front<S> {
         let key = wedge.min_distance().to_f64();
         self.queue.push(Event {
             key,
-            kind: EventKind::Wedge(at),
+            what: EventKind::Wedge(at),
         });
         self.peak_queue = self.peak_queue.max(self.queue.len());
     }
 
     /// Asks, once the front reaches `key`, whether the wedges of edge `e` are still needed.
     pub(crate) fn push_closing(&mut self, edge: EdgeId, key: f64) {
-        self.closing.push(Closing { key, edge });
+        self.closing.push(Closing { key, what: edge });
     }
 
     /// The longest the queue has been after a wedge joined it.
@@ -201,7 +182,7 @@ impl<S: Scalar> Front<S> {
             self.pending_emission[v.index()] = true;
             self.queue.push(Event {
                 key: approx,
-                kind: EventKind::Vertex(v),
+                what: EventKind::Vertex(v),
             });
         }
         if let (Some(distance), Some(path)) = (twin_distance, twin_path) {

@@ -309,7 +309,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         while let Some(event) = self.front.pop() {
             while let Some(c) = self.front.pop_closing(event.key) {
                 self.wedges
-                    .close(c.edge, c.key, self.unfolding.length(c.edge));
+                    .close(c.what, c.key, self.unfolding.length(c.what));
             }
             if event.key > self.max_distance {
                 break;
@@ -326,7 +326,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     front: self.unfolding.to_model(event.key),
                 });
             }
-            match event.kind {
+            match event.what {
                 EventKind::Wedge(at) => match self.wedges.due(
                     at,
                     event.key,
