@@ -147,16 +147,7 @@ fn a_source_in_the_middle_of_a_degenerate_face_is_traced_to_in_every_backend() {
     )
     .expect("usable mesh");
     let want = straight(&mesh, 0, 3) + straight(&mesh, 3, 5);
-    for (backend, (length, distance)) in every_backend_traced(&mesh, 0, 5) {
-        assert!(
-            (distance - want).abs() <= 1e-12 * want,
-            "{backend}: distance {distance}, want {want}"
-        );
-        assert!(
-            (length - want).abs() <= 1e-12 * want,
-            "{backend}: length {length}, want {want}"
-        );
-    }
+    assert_traced_straight(&mesh, 0, 5, want);
 }
 
 /// A pyramid (rotated) with its apex `v0` moved to the middle of the base edge `(v2, v3)`, a
