@@ -128,6 +128,20 @@ fn ties_of_congruent_paths_are_certified_and_agree_with_f64() {
     }
 }
 
+/// Near the antipode of the source, two images of it cross an edge a few 1e-17 before a
+/// vertex; an image that crossed it there arrives again (the same distance function by another
+/// chain of faces), and eq. (2) meets their crossing as a root exactly at the range's end. The
+/// end keeps the function it was cut against, so the tie there is known by structure. Before,
+/// these runs left 2 and 3 decisions uncertified (the unit sphere of the shared models 4).
+#[test]
+fn crossings_met_again_at_a_range_end_are_ties_by_structure() {
+    for level in [1, 2] {
+        let mesh = shapes::icosphere(level);
+        let source = SurfacePoint::Vertex(VertexId(0));
+        assert_certified_and_agrees_with_f64(&mesh, source, &format!("icosphere {level} from v0"));
+    }
+}
+
 /// A checkerboard terrain of 2 x 2 unit squares, the corners of one colour raised by 1/2: its
 /// saddles' wedges meet the wedges that lit them where two square roots of one value in
 /// different radicals cancel (`c1 M1 + c2 M2`, the symbols not independent), proved zero by

@@ -30,16 +30,30 @@ pub(crate) struct Piece<S> {
     pub(crate) lo: S,
     pub(crate) hi: S,
     pub(crate) owner: Owner,
+    /// For each end, the wedge whose crossing with the owner (a root of eq. (1)) it is: the
+    /// two distance functions are equal there.
+    pub(crate) cut: [Option<Owner>; 2],
 }
 
 fn push_piece<S: Scalar>(pieces: &mut Vec<Piece<S>>, lo: S, hi: S, owner: Owner) {
+    push_cut_piece(pieces, lo, hi, owner, [None, None]);
+}
+
+fn push_cut_piece<S: Scalar>(
+    pieces: &mut Vec<Piece<S>>,
+    lo: S,
+    hi: S,
+    owner: Owner,
+    cut: [Option<Owner>; 2],
+) {
     if let Some(last) = pieces.last_mut() {
         if last.owner == owner {
             last.hi = hi;
+            last.cut[1] = cut[1];
             return;
         }
     }
-    pieces.push(Piece { lo, hi, owner });
+    pieces.push(Piece { lo, hi, owner, cut });
 }
 
 /// The smallest value of a distance function on `[lo, hi]` (it is convex, so the foot of the
@@ -113,14 +127,18 @@ fn split_shared_range<S: Scalar>(
     let mut previous = None;
     let mut start = lo;
     for (end, lower) in bisector.stretches() {
-        let owner = match lower {
-            Lower::Second => Owner::New,
-            Lower::First | Lower::Neither => Owner::Old(id),
+        let (owner, other) = match lower {
+            Lower::Second => (Owner::New, Owner::Old(id)),
+            Lower::First | Lower::Neither => (Owner::Old(id), Owner::New),
         };
         changes += usize::from(previous.is_some_and(|p| p != owner));
+        let cut = [
+            previous.is_some().then_some(other),
+            end.is_some().then_some(other),
+        ];
         previous = Some(owner);
         let end = end.unwrap_or_else(|| hi.clone());
-        push_piece(pieces, start, end.clone(), owner);
+        push_cut_piece(pieces, start, end.clone(), owner, cut);
         start = end;
     }
     let case = match changes {
@@ -176,6 +194,23 @@ fn lower_by_anchor<S: Scalar>(
     }
 }
 
+/// The distance at range end `end` (`i`: 0 for the shared range's `lo`, 1 for its `hi`) where
+/// it is the crossing of the wedge that owns it with a wedge of the other one's distance
+/// function: a tie known by structure, which eq. (2) would meet as a root exactly at the end.
+fn crossed_at<S: Scalar>(
+    end: &S,
+    i: usize,
+    owns: &[bool; 2],
+    kept: [&Provenance<S>; 2],
+    functions: [&SourceDistance<S>; 2],
+    length: &S,
+) -> Option<S> {
+    (0..2).find_map(|k| {
+        let crossed = owns[k].then(|| kept[k].crossing(i)).flatten()?;
+        S::same_distance_function(&crossed, functions[1 - k], length).then(|| crossed.at(end))
+    })
+}
+
 /// Cuts the union of the new wedge's range and the ranges of the wedges it overlaps (sorted,
 /// disjoint, each with an id and what it keeps of its construction) into pieces, each owned by
 /// the better wedge there.
@@ -228,7 +263,15 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
                 });
             }
             if values.iter().all(Option::is_none) {
-                return None;
+                return crossed_at(
+                    end,
+                    i,
+                    &owns[i],
+                    [old_kept, my_kept],
+                    [&theirs, &mine],
+                    length,
+                )
+                .map(|d| [d.clone(), d]);
             }
             let [t, m] = values;
             Some([

@@ -50,6 +50,9 @@ pub(crate) struct Provenance<S: Scalar> {
     pub(crate) at_ends: [S::Kept<S>; 2],
     /// The anchors of the range's ends `b0` and `b1`, where they lie on a shadow line.
     pub(crate) anchors: [S::Kept<Anchor<S>>; 2],
+    /// The distance functions of the wedges whose crossings with this one (roots of eq. (1))
+    /// are the range's ends `b0` and `b1`, where they are: the two are equal there.
+    pub(crate) crossings: [S::Kept<SourceDistance<S>>; 2],
     /// The pseudo-source's image in the frame of the flat region the wedge lies in, if it does
     /// (see `flat_region.rs`).
     pub(crate) image: S::Kept<RegionImage<S>>,
@@ -63,6 +66,7 @@ impl<S: Scalar> Default for Provenance<S> {
         Provenance {
             at_ends: Default::default(),
             anchors: Default::default(),
+            crossings: Default::default(),
             image: Default::default(),
             path: Default::default(),
         }
@@ -75,6 +79,7 @@ impl<S: Scalar> Provenance<S> {
         Provenance {
             at_ends,
             anchors: anchors.map(|a| a.map_or_else(Default::default, |a| S::keep(|| a))),
+            crossings: Default::default(),
             image: Default::default(),
             path: Default::default(),
         }
@@ -102,19 +107,42 @@ impl<S: Scalar> Provenance<S> {
         S::kept(&self.anchors[i])
     }
 
-    /// The same provenance with the anchors of the range ends that `keep` says are still the
-    /// wedge's ends (a trimmed end is a new point, no longer on the shadow line).
+    /// The distance function of the wedge whose crossing with this one is range end `i`, if
+    /// kept.
+    pub(crate) fn crossing(&self, i: usize) -> Option<SourceDistance<S>> {
+        S::kept(&self.crossings[i])
+    }
+
+    /// The same provenance with the anchors and crossings of the range ends that `keep` says
+    /// are still the wedge's ends (a trimmed end is a new point, no longer on the shadow line).
     pub(crate) fn trimmed(&self, keep: [bool; 2]) -> Self {
-        let anchor = |i: usize| match (keep[i], self.anchor(i)) {
-            (true, Some(a)) => S::keep(|| a),
-            _ => Default::default(),
-        };
+        fn kept_ends<T: Clone + Default>(ends: &[T; 2], keep: [bool; 2]) -> [T; 2] {
+            [0, 1].map(|i| {
+                if keep[i] {
+                    ends[i].clone()
+                } else {
+                    T::default()
+                }
+            })
+        }
         Provenance {
             at_ends: self.at_ends.clone(),
-            anchors: [anchor(0), anchor(1)],
+            anchors: kept_ends(&self.anchors, keep),
+            crossings: kept_ends(&self.crossings, keep),
             image: self.image.clone(),
             path: self.path.clone(),
         }
+    }
+
+    /// The same provenance with the crossings that are now its range ends: `crossed[i]` is the
+    /// distance function of the wedge that crosses this one at end `i`.
+    pub(crate) fn with_crossings(mut self, crossed: [Option<SourceDistance<S>>; 2]) -> Self {
+        for (kept, crossed) in self.crossings.iter_mut().zip(crossed) {
+            if let Some(f) = crossed {
+                *kept = S::keep(|| f);
+            }
+        }
+        self
     }
 
     /// The provenance of a wedge joined from two that continue one another, this one first
@@ -128,6 +156,8 @@ impl<S: Scalar> Provenance<S> {
         let [next_0, next_1] = next.at_ends;
         let [anchor_0, _] = self.anchors;
         let [_, anchor_1] = next.anchors;
+        let [crossing_0, _] = self.crossings;
+        let [_, crossing_1] = next.crossings;
         let image = if S::kept(&self.image).is_some() {
             self.image
         } else {
@@ -141,6 +171,7 @@ impl<S: Scalar> Provenance<S> {
         Provenance {
             at_ends: [either(first_0, next_0), either(first_1, next_1)],
             anchors: [anchor_0, anchor_1],
+            crossings: [crossing_0, crossing_1],
             image,
             path,
         }

@@ -7,7 +7,7 @@
 
 use super::edge_wedges::EdgeWedges;
 use super::intersect::{cut_into_pieces, Owner, Piece};
-use super::provenance::Provenance;
+use super::provenance::{keeps_values, Provenance};
 use super::stats::Stats;
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{EdgeId, Side, SourceId, VertexId};
@@ -414,6 +414,7 @@ impl<S: Scalar> WedgeLists<S> {
         events.clear();
         let zero = S::zero();
         let mine = w.distance_function();
+        let keeps_values = keeps_values::<S>();
         // Which range ends of a wedge a piece keeps (asked only where anchors depend on it).
         let anchored = |k: &Provenance<S>| k.anchor(0).is_some() || k.anchor(1).is_some();
         let keeps = |[b0, b1]: [&S; 2], lo: &S, hi: &S| {
@@ -426,6 +427,13 @@ impl<S: Scalar> WedgeLists<S> {
             if !S::has_extent(&piece.lo, &piece.hi, length) {
                 continue;
             }
+            // Kept only by number types that keep values: f64 builds none of it.
+            let crossed = piece.cut.map(|other| {
+                keeps_values.then(|| match other? {
+                    Owner::New => Some(mine.clone()),
+                    Owner::Old(k) => Some(list[first + k as usize].wedge(e).distance_function()),
+                })?
+            });
             let (entry, event) = match piece.owner {
                 Owner::New => {
                     let reach = w.reach(length);
@@ -441,7 +449,8 @@ impl<S: Scalar> WedgeLists<S> {
                         kept.trimmed(keeps([&w.b0, &w.b1], &piece.lo, &piece.hi))
                     } else {
                         kept.clone()
-                    };
+                    }
+                    .with_crossings(crossed);
                     let mut wedge = w.clone();
                     wedge.b0 = piece.lo;
                     wedge.b1 = piece.hi;
@@ -453,7 +462,7 @@ impl<S: Scalar> WedgeLists<S> {
                     let mut entry = list[first + k].clone();
                     let kept_ends = keeps([&entry.b0, &entry.b1], &piece.lo, &piece.hi);
                     if kept_ends != [true, true] {
-                        entry.kept = entry.kept.trimmed(kept_ends);
+                        entry.kept = entry.kept.trimmed(kept_ends).with_crossings(crossed);
                         entry.b0 = piece.lo;
                         entry.b1 = piece.hi;
                     }
