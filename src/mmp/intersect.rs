@@ -203,11 +203,10 @@ fn crossed_at<S: Scalar>(
     owns: &[bool; 2],
     kept: [&Provenance<S>; 2],
     functions: [&SourceDistance<S>; 2],
-    length: &S,
 ) -> Option<S> {
     (0..2).find_map(|k| {
         let crossed = owns[k].then(|| kept[k].crossing(i)).flatten()?;
-        S::same_distance_function(&crossed, functions[1 - k], length).then(|| crossed.at(end))
+        S::proved_same_distance_function(&crossed, functions[1 - k]).then(|| crossed.at(end))
     })
 }
 
@@ -263,15 +262,8 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
                 });
             }
             if values.iter().all(Option::is_none) {
-                return crossed_at(
-                    end,
-                    i,
-                    &owns[i],
-                    [old_kept, my_kept],
-                    [&theirs, &mine],
-                    length,
-                )
-                .map(|d| [d.clone(), d]);
+                return crossed_at(end, i, &owns[i], [old_kept, my_kept], [&theirs, &mine])
+                    .map(|d| [d.clone(), d]);
             }
             let [t, m] = values;
             Some([

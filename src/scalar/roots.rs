@@ -128,9 +128,18 @@ pub(crate) fn same_distance_function<T: CertifiedSign>(
     a: &SourceDistance<T>,
     b: &SourceDistance<T>,
 ) -> Option<bool> {
+    same_distance_function_by(a, b, T::certified_sign)
+}
+
+/// [`same_distance_function`] with the coefficients' signs told by `sign`.
+pub(crate) fn same_distance_function_by<T: CertifiedSign>(
+    a: &SourceDistance<T>,
+    b: &SourceDistance<T>,
+    sign: impl Fn(&T) -> Option<Sign>,
+) -> Option<bool> {
     let eq2 = Eq2Coefficients::new(a, b, &a.x);
     for c in [&eq2.a, &eq2.b, &eq2.c] {
-        if c.certified_sign()? != Sign::Zero {
+        if sign(c)? != Sign::Zero {
             return Some(false);
         }
     }

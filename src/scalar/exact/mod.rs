@@ -556,6 +556,12 @@ impl Scalar for Real {
         roots::same_distance_function(a, b) == Some(true)
     }
 
+    /// By signs settled without refinement ([`CertifiedSign::clear_sign`]): a question it cannot
+    /// settle at once is no decision, and no tie.
+    fn proved_same_distance_function(a: &SourceDistance<Self>, b: &SourceDistance<Self>) -> bool {
+        roots::same_distance_function_by(a, b, <Real as CertifiedSign>::clear_sign) == Some(true)
+    }
+
     /// Certified, as [`Scalar::same_distance_function`]: in a flat region the image is one
     /// expression however it crossed the region (see `mmp/flat_region.rs`).
     fn same_image(a: &SourceDistance<Self>, b: &SourceDistance<Self>, scale: &Self) -> bool {
