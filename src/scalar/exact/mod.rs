@@ -822,6 +822,58 @@ mod tests {
     }
 
     #[test]
+    fn a_length_along_a_chain_of_edges_is_the_root_of_its_expanded_square() {
+        // The length of a straight line across k edges of radical lengths, sqrt(T^2) with
+        // T = c1 sqrt(r1) + ... + ck sqrt(rk) expanded, is T: the square root of a square of
+        // the tower, not a new radical. Radicands of about 100 bits, coprime, as edge lengths
+        // of a float mesh are; coefficients dyadic.
+        let radicand = |a: i64, b: i64| {
+            Real::from_rational(Rational::from(Integer::from(a) * Integer::from(b)))
+        };
+        let dyadic =
+            |c: i64, k: u32| int(c) / Real::from_rational(Rational::from(Integer::from(2).pow(k)));
+        let terms = [
+            (radicand(4_311_131_297, 4_311_131_299), dyadic(1, 54)),
+            (radicand(4_311_131_291, 4_311_131_333), dyadic(-3, 55)),
+            (radicand(34_489_050_391, 34_489_050_407), dyadic(1, 57)),
+            (radicand(34_489_050_403, 34_489_050_389), dyadic(5, 57)),
+            (radicand(4_311_131_311, 4_311_131_323), dyadic(1, 54)),
+            (radicand(1_326_500_107, 1_326_500_113), dyadic(13, 56)),
+        ];
+        for k in 1..=terms.len() {
+            let t = terms[..k]
+                .iter()
+                .fold(int(0), |t, (r, c)| t + &(r.sqrt() * c));
+            let square = t.clone() * &t;
+            let length = square.sqrt();
+            let expected = if t.to_f64() > 0.0 {
+                t.clone()
+            } else {
+                -t.clone()
+            };
+            assert_eq!(
+                (length.clone() - &expected).certified_sign(),
+                normal_form_zero(),
+                "{k} terms"
+            );
+            // Not the root of a square: off by one part in 10^30.
+            let off = Real::from_rational(
+                Rational::new(Integer::from(1), Integer::from(10).pow(30)).unwrap(),
+            );
+            let near = (square + &off).sqrt() - &expected;
+            assert_eq!(
+                near.certified_sign(),
+                (Sign::Positive, Certificate::Refinement)
+            );
+        }
+        // sqrt 2 + sqrt 3 + sqrt 5: a square in the tower whose search meets sqrt 24 = 2 sqrt 2
+        // sqrt 3, of a square class of its own.
+        let t = int(2).sqrt() + &int(3).sqrt() + &int(5).sqrt();
+        let length = (t.clone() * &t).sqrt();
+        assert_eq!((length - &t).certified_sign(), normal_form_zero());
+    }
+
+    #[test]
     #[should_panic(expected = "non-finite f64 has no exact value")]
     fn from_f64_of_nan_panics() {
         let _ = Real::from_f64(f64::NAN);
