@@ -184,6 +184,17 @@ fn lengths_along_chains_of_edges_of_an_annulus_are_certified_and_agree_with_f64(
     }
 }
 
+/// The annulus of 12 sections as trimesh writes it (`trimesh.creation.annulus(r_min=0.5,
+/// r_max=1, height=1, sections=12)` exported to OBJ, coordinates to 8 decimals): a tie of two
+/// sums of distances whose radicands hold other radicals, proved by eliminating the square
+/// roots one at a time. Before, this run left 1 decision uncertified.
+#[test]
+fn sums_of_nested_distances_on_a_trimesh_annulus_are_certified_and_agree_with_f64() {
+    let name = "annulus_12_trimesh.obj";
+    let mesh = common::data_mesh(name);
+    assert_certified_and_agrees_with_f64(&mesh, SurfacePoint::Vertex(VertexId(0)), name);
+}
+
 /// The faces of an `n` x `n` grid of squares whose `(n + 1)^2` vertices are numbered row by
 /// row, each square split by its diagonal from its first corner.
 fn lattice_faces(n: u32) -> Vec<[u32; 3]> {

@@ -11,7 +11,9 @@
 //!    rational evaluation, by a zero normal form in a tower of quadratic extensions, or when
 //!    the enclosure is smaller than the BFMSS separation bound \[BFMSS01\] (a non-zero value
 //!    cannot be that small); last, by a zero normal form in which the subexpressions too
-//!    large to expand are indeterminates (an identity whatever their values);
+//!    large to expand are indeterminates (an identity whatever their values), or by
+//!    eliminating the square roots of a normal form one at a time (`A + B s = 0` where `A`
+//!    and `B` have opposite signs and `A^2 - B^2 s^2 = 0`);
 //! 4. a decision that reaches the precision cap (this thread's: [`set_precision_cap`], or the
 //!    run's: [`PropagateOptions::precision_cap`](crate::PropagateOptions)) without either is
 //!    *uncertified*: the value is then within `2^-cap` of zero, it is treated as zero (a tie),
@@ -195,7 +197,7 @@ impl Real {
                 }
             }
             if precision >= cap {
-                if normal_form::zero_over_atoms(node) {
+                if normal_form::zero_over_atoms(node) || normal_form::zero_by_elimination(node) {
                     return (
                         Sign::Zero,
                         Certificate::CertifiedZero(ZeroProof::NormalForm),
@@ -871,6 +873,36 @@ mod tests {
         let t = int(2).sqrt() + &int(3).sqrt() + &int(5).sqrt();
         let length = (t.clone() * &t).sqrt();
         assert_eq!((length - &t).certified_sign(), normal_form_zero());
+    }
+
+    #[test]
+    fn a_sum_of_nested_radicals_is_proved_zero_by_eliminating_them() {
+        // sqrt(A) + sqrt(B) = sqrt(A + B + 2 sqrt(A B)) with A and B themselves sums of
+        // radicals of large integers: four radicals of radicals, related only through their
+        // radicands, so that the normal form is not zero; nine square roots put the separation
+        // bound past the cap.
+        let big = |a: i64, b: i64| {
+            Real::from_rational(Rational::from(Integer::from(a) * Integer::from(b)))
+        };
+        let a = big(4_311_131_297, 4_311_131_299).sqrt()
+            + &big(34_489_050_391, 34_489_050_407).sqrt()
+            + &big(1_326_500_107, 1_326_500_113).sqrt()
+            + &int(7);
+        let b = big(4_311_131_291, 4_311_131_333).sqrt() * &int(3)
+            + &big(4_311_131_311, 4_311_131_323).sqrt()
+            + &int(11);
+        let joint = (a.clone() + &b + &(int(2) * &(a.clone() * &b).sqrt())).sqrt();
+        let identity = a.sqrt() + &b.sqrt() - &joint;
+        assert_eq!(identity.certified_sign(), normal_form_zero());
+        // Off by 2^-9000, below what refinement within the cap can see: not called zero.
+        let tiny = Real::from_rational(
+            Rational::new(Integer::from(1), Integer::from(2).pow(9000)).unwrap(),
+        );
+        let (_, certificate) = (identity + &tiny).certified_sign();
+        assert!(
+            matches!(certificate, Certificate::Uncertified(_)),
+            "{certificate:?}"
+        );
     }
 
     #[test]

@@ -23,7 +23,10 @@
 //! tangency with the image that lit it, across the faces between them), and they hold whatever
 //! value the deep unfoldings below give the image. Subexpressions whose forms over atoms are
 //! proportional share one atom, so that `(p - x)^2` and `(x - p)^2` built on two sides of a
-//! mirror are one atom squared.
+//! mirror are one atom squared. A form that is not zero as it stands may still be proved zero
+//! by eliminating its square roots one at a time ([`zero_by_elimination`]): sums of distances
+//! of several radicals whose radicands hold other radicals, where the symbols are not
+//! independent.
 
 use super::super::bignum::{Integer, Rational};
 use super::super::{Field, Interval, Sign};
@@ -573,6 +576,70 @@ impl NormalForm {
         a.add(&b, -1)
             .is_some_and(|difference| difference.is_zero_by_squares(depth - 1))
     }
+}
+
+impl NormalForm {
+    /// Whether the form is zero, by eliminating its square roots one at a time: with `s` its
+    /// last square-root symbol (of square `D`, positive) and the form `A + B s`, the form is
+    /// zero when `A` and `B` have opposite signs (by their enclosures) and `A^2 - B^2 D`, free
+    /// of `s`, is zero in turn; then `|A| = |B| s`. A zero is a proof, whether or not the
+    /// symbols are independent (sums of distances `d1 + d2 = d3 + d4` of several radicals,
+    /// their radicands in turn of other radicals); `false` proves nothing.
+    fn is_zero_by_elimination(&self) -> bool {
+        let mut form = self.clone();
+        loop {
+            if form.is_zero() {
+                return true;
+            }
+            let Some(s) = form
+                .0
+                .keys()
+                .flatten()
+                .copied()
+                .filter(|&s| !is_atom(s))
+                .max()
+            else {
+                return false;
+            };
+            let Some(d) = square_of(s) else {
+                return false;
+            };
+            let (mut a, mut b) = (NormalForm::default(), NormalForm::default());
+            for (m, c) in &form.0 {
+                match m.iter().position(|&x| x == s) {
+                    Some(i) => {
+                        let mut rest = m.clone();
+                        rest.remove(i);
+                        b.0.insert(rest, c.clone());
+                    }
+                    None => {
+                        a.0.insert(m.clone(), c.clone());
+                    }
+                }
+            }
+            let opposite = matches!(
+                (a.enclosure().sign(), b.enclosure().sign()),
+                (Some(Sign::Positive), Some(Sign::Negative))
+                    | (Some(Sign::Negative), Some(Sign::Positive))
+            );
+            let Some(next) = opposite
+                .then(|| a.mul(&a)?.add(&b.mul(&b)?.mul(&d)?, -1))
+                .flatten()
+            else {
+                return false;
+            };
+            form = next;
+        }
+    }
+}
+
+/// Whether the node's normal form is zero by the elimination of its square roots
+/// ([`NormalForm::is_zero_by_elimination`]), over atoms where it has no normal form (see
+/// [`zero_over_atoms`]). Costly: asked only of a zero that nothing else could prove.
+pub(crate) fn zero_by_elimination(node: &Arc<Node>) -> bool {
+    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
+    let form = memoized(node).unwrap_or_else(|| over_atoms(node));
+    form.is_zero_by_elimination()
 }
 
 /// Whether the node's normal form is zero, by [`NormalForm::is_zero_by_squares`] where its
