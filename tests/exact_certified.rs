@@ -158,6 +158,57 @@ fn cancelling_radicals_of_a_checkerboard_are_proved_by_their_squares() {
     assert_certified_and_agrees_with_f64(&mesh, source, "checkerboard from its middle");
 }
 
+/// A flat ring between radii 1/2 and 1 extruded to height 1, as CAD tools and trimesh's
+/// `creation.annulus` build it: `sections` segments, each with four vertices (inner and outer,
+/// bottom and top) and eight faces (bottom ring, outer wall, top ring, inner wall).
+fn annulus(sections: u32) -> TriMesh {
+    let mut positions = Vec::new();
+    for i in 0..sections {
+        let angle = std::f64::consts::TAU * f64::from(i) / f64::from(sections);
+        let (s, c) = angle.sin_cos();
+        positions.extend([
+            [0.5 * c, 0.5 * s, -0.5],
+            [c, s, -0.5],
+            [c, s, 0.5],
+            [0.5 * c, 0.5 * s, 0.5],
+        ]);
+    }
+    let mut faces = Vec::new();
+    for i in 0..sections {
+        let (a, b) = (4 * i, 4 * ((i + 1) % sections));
+        for k in 0..4 {
+            let k1 = (k + 1) % 4;
+            faces.extend([[a + k, b + k, a + k1], [a + k1, b + k, b + k1]]);
+        }
+    }
+    TriMesh::new(positions, faces).expect("an annulus is a mesh")
+}
+
+/// Across the flat rings and up the walls of an annulus, a geodesic runs straight through
+/// vertices along a chain of edges of radical lengths: its length is the square root of the
+/// expanded square of `c1 sqrt(r1) + ... + ck sqrt(rk)`, found as that sum in the tower of
+/// radicals instead of becoming a radical unrelated to it. Before, these runs left 14 and 56
+/// decisions uncertified.
+#[test]
+fn lengths_along_chains_of_edges_of_an_annulus_are_certified_and_agree_with_f64() {
+    for sections in [7, 13] {
+        let mesh = annulus(sections);
+        let source = SurfacePoint::Vertex(VertexId(0));
+        assert_certified_and_agrees_with_f64(&mesh, source, &format!("annulus of {sections}"));
+    }
+}
+
+/// The annulus of 12 sections as trimesh writes it (`trimesh.creation.annulus(r_min=0.5,
+/// r_max=1, height=1, sections=12)` exported to OBJ, coordinates to 8 decimals): a tie of two
+/// sums of distances whose radicands hold other radicals, proved by eliminating the square
+/// roots one at a time. Before, this run left 1 decision uncertified.
+#[test]
+fn sums_of_nested_distances_on_a_trimesh_annulus_are_certified_and_agree_with_f64() {
+    let name = "annulus_12_trimesh.obj";
+    let mesh = common::data_mesh(name);
+    assert_certified_and_agrees_with_f64(&mesh, SurfacePoint::Vertex(VertexId(0)), name);
+}
+
 /// The faces of an `n` x `n` grid of squares whose `(n + 1)^2` vertices are numbered row by
 /// row, each square split by its diagonal from its first corner.
 fn lattice_faces(n: u32) -> Vec<[u32; 3]> {

@@ -11,7 +11,9 @@
 //!    rational evaluation, by a zero normal form in a tower of quadratic extensions, or when
 //!    the enclosure is smaller than the BFMSS separation bound \[BFMSS01\] (a non-zero value
 //!    cannot be that small); last, by a zero normal form in which the subexpressions too
-//!    large to expand are indeterminates (an identity whatever their values);
+//!    large to expand are indeterminates (an identity whatever their values), or by
+//!    eliminating the square roots of a normal form one at a time (`A + B s = 0` where `A`
+//!    and `B` have opposite signs and `A^2 - B^2 s^2 = 0`);
 //! 4. a decision that reaches the precision cap (this thread's: [`set_precision_cap`], or the
 //!    run's: [`PropagateOptions::precision_cap`](crate::PropagateOptions)) without either is
 //!    *uncertified*: the value is then within `2^-cap` of zero, it is treated as zero (a tie),
@@ -195,7 +197,7 @@ impl Real {
                 }
             }
             if precision >= cap {
-                if normal_form::zero_over_atoms(node) {
+                if normal_form::zero_over_atoms(node) || normal_form::zero_by_elimination(node) {
                     return (
                         Sign::Zero,
                         Certificate::CertifiedZero(ZeroProof::NormalForm),
@@ -815,6 +817,88 @@ mod tests {
         let sum = deep.clone() + &r2;
         let identity =
             sum.clone() * &sum - &(deep.clone() * &deep) - &(int(2) * &r2 * &deep) - &int(2);
+        assert_eq!(identity.certified_sign(), normal_form_zero());
+        // Off by 2^-9000, below what refinement within the cap can see: not called zero.
+        let tiny = Real::from_rational(
+            Rational::new(Integer::from(1), Integer::from(2).pow(9000)).unwrap(),
+        );
+        let (_, certificate) = (identity + &tiny).certified_sign();
+        assert!(
+            matches!(certificate, Certificate::Uncertified(_)),
+            "{certificate:?}"
+        );
+    }
+
+    #[test]
+    fn a_length_along_a_chain_of_edges_is_the_root_of_its_expanded_square() {
+        // The length of a straight line across k edges of radical lengths, sqrt(T^2) with
+        // T = c1 sqrt(r1) + ... + ck sqrt(rk) expanded, is T: the square root of a square of
+        // the tower, not a new radical. Radicands of about 100 bits, coprime, as edge lengths
+        // of a float mesh are; coefficients dyadic.
+        let radicand = |a: i64, b: i64| {
+            Real::from_rational(Rational::from(Integer::from(a) * Integer::from(b)))
+        };
+        let dyadic =
+            |c: i64, k: u32| int(c) / Real::from_rational(Rational::from(Integer::from(2).pow(k)));
+        let terms = [
+            (radicand(4_311_131_297, 4_311_131_299), dyadic(1, 54)),
+            (radicand(4_311_131_291, 4_311_131_333), dyadic(-3, 55)),
+            (radicand(34_489_050_391, 34_489_050_407), dyadic(1, 57)),
+            (radicand(34_489_050_403, 34_489_050_389), dyadic(5, 57)),
+            (radicand(4_311_131_311, 4_311_131_323), dyadic(1, 54)),
+            (radicand(1_326_500_107, 1_326_500_113), dyadic(13, 56)),
+        ];
+        for k in 1..=terms.len() {
+            let t = terms[..k]
+                .iter()
+                .fold(int(0), |t, (r, c)| t + &(r.sqrt() * c));
+            let square = t.clone() * &t;
+            let length = square.sqrt();
+            let expected = if t.to_f64() > 0.0 {
+                t.clone()
+            } else {
+                -t.clone()
+            };
+            assert_eq!(
+                (length.clone() - &expected).certified_sign(),
+                normal_form_zero(),
+                "{k} terms"
+            );
+            // Not the root of a square: off by one part in 10^30.
+            let off = Real::from_rational(
+                Rational::new(Integer::from(1), Integer::from(10).pow(30)).unwrap(),
+            );
+            let near = (square + &off).sqrt() - &expected;
+            assert_eq!(
+                near.certified_sign(),
+                (Sign::Positive, Certificate::Refinement)
+            );
+        }
+        // sqrt 2 + sqrt 3 + sqrt 5: a square in the tower whose search meets sqrt 24 = 2 sqrt 2
+        // sqrt 3, of a square class of its own.
+        let t = int(2).sqrt() + &int(3).sqrt() + &int(5).sqrt();
+        let length = (t.clone() * &t).sqrt();
+        assert_eq!((length - &t).certified_sign(), normal_form_zero());
+    }
+
+    #[test]
+    fn a_sum_of_nested_radicals_is_proved_zero_by_eliminating_them() {
+        // sqrt(A) + sqrt(B) = sqrt(A + B + 2 sqrt(A B)) with A and B themselves sums of
+        // radicals of large integers: four radicals of radicals, related only through their
+        // radicands, so that the normal form is not zero; nine square roots put the separation
+        // bound past the cap.
+        let big = |a: i64, b: i64| {
+            Real::from_rational(Rational::from(Integer::from(a) * Integer::from(b)))
+        };
+        let a = big(4_311_131_297, 4_311_131_299).sqrt()
+            + &big(34_489_050_391, 34_489_050_407).sqrt()
+            + &big(1_326_500_107, 1_326_500_113).sqrt()
+            + &int(7);
+        let b = big(4_311_131_291, 4_311_131_333).sqrt() * &int(3)
+            + &big(4_311_131_311, 4_311_131_323).sqrt()
+            + &int(11);
+        let joint = (a.clone() + &b + &(int(2) * &(a.clone() * &b).sqrt())).sqrt();
+        let identity = a.sqrt() + &b.sqrt() - &joint;
         assert_eq!(identity.certified_sign(), normal_form_zero());
         // Off by 2^-9000, below what refinement within the cap can see: not called zero.
         let tiny = Real::from_rational(

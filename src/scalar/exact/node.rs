@@ -114,7 +114,7 @@ fn log2_bound(bits: u64) -> f64 {
 }
 
 /// The `f64` interval enclosing a rational.
-fn enclose(r: &Rational) -> Interval {
+pub(crate) fn enclose(r: &Rational) -> Interval {
     let x = r.to_f64();
     if !x.is_finite() {
         return Interval::ENTIRE;

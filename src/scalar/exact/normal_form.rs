@@ -13,15 +13,24 @@
 //! zero normal form proves the value zero; a non-zero one proves nothing, and the refinement
 //! with the separation bound takes over. Normal forms that grow past [`MAX_TERMS`] give up.
 //!
+//! The square root of a form that is a square in the tower is that square's root, not a new
+//! symbol ([`NormalForm::root_in_tower`], checked by squaring): a length along a straight line
+//! through a chain of edges, `sqrt((c1 sqrt(r1) + ... + ck sqrt(rk))^2)` once its square is
+//! expanded, is then the sum of the edges' lengths, and its identities stay visible.
+//!
 //! A last resort ([`zero_over_atoms`]) writes every subexpression too large to expand as an
 //! *atom*, an indeterminate: the identities MMP creates are mostly local (a pseudo-source's
 //! tangency with the image that lit it, across the faces between them), and they hold whatever
 //! value the deep unfoldings below give the image. Subexpressions whose forms over atoms are
 //! proportional share one atom, so that `(p - x)^2` and `(x - p)^2` built on two sides of a
-//! mirror are one atom squared.
+//! mirror are one atom squared. A form that is not zero as it stands may still be proved zero
+//! by eliminating its square roots one at a time ([`zero_by_elimination`]): sums of distances
+//! of several radicals whose radicands hold other radicals, where the symbols are not
+//! independent.
 
 use super::super::bignum::{Integer, Rational};
-use super::node::{Node, Op};
+use super::super::{Field, Interval, Sign};
+use super::node::{enclose, Node, Op};
 use std::cell::RefCell;
 use std::collections::{BTreeMap, HashMap};
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -64,6 +73,9 @@ struct Tower {
     id: u64,
     /// The square of each symbol; `None` for an atom.
     squares: Vec<Option<NormalForm>>,
+    /// An enclosure of each symbol's value, for the sign of a square root found in the tower
+    /// ([`NormalForm::root_in_tower`]).
+    enclosures: Vec<Interval>,
     /// The atoms, by the address of the node each stands for (held, so that the address is
     /// not reused while the tower lives).
     atoms: HashMap<usize, (u32, Arc<Node>)>,
@@ -79,10 +91,19 @@ struct Tower {
 }
 
 impl Tower {
+    /// A new symbol with this square (`None` for an atom) and an enclosure of its value.
+    fn push(&mut self, square: Option<NormalForm>, enclosure: Interval) -> u32 {
+        let id = self.squares.len() as u32;
+        self.squares.push(square);
+        self.enclosures.push(enclosure);
+        id
+    }
+
     fn new() -> Tower {
         Tower {
             id: NEXT_TOWER.fetch_add(1, Ordering::Relaxed),
             squares: Vec::new(),
+            enclosures: Vec::new(),
             atoms: HashMap::new(),
             atom_forms: HashMap::new(),
             keyed_atoms: HashMap::new(),
@@ -293,20 +314,235 @@ impl NormalForm {
         if let Some(root) = self.denested() {
             return Some(root);
         }
-        let id = TOWER.with(|t| {
-            let mut t = t.borrow_mut();
-            match t.radicals.get(self) {
-                Some(&id) => id,
-                None => {
-                    let id = t.squares.len() as u32;
-                    t.squares.push(Some(self.clone()));
-                    t.radicals.insert(self.clone(), id);
-                    id
-                }
-            }
+        if let Some(root) = self.root_in_tower(ROOT_DEPTH) {
+            return Some(root);
+        }
+        let known = TOWER.with(|t| t.borrow().radicals.get(self).copied());
+        let id = known.unwrap_or_else(|| {
+            let enclosure = self.enclosure().sqrt();
+            TOWER.with(|t| {
+                let mut t = t.borrow_mut();
+                let id = t.push(Some(self.clone()), enclosure);
+                t.radicals.insert(self.clone(), id);
+                id
+            })
         });
         Some(NormalForm::monomial(Rational::from(1), vec![id]))
     }
+}
+
+/// How many symbols deep [`NormalForm::root_in_tower`] looks: each level may ask three roots of
+/// the level below.
+const ROOT_DEPTH: u32 = 4;
+
+/// Radicands with more terms than this are not searched for a root in the tower.
+const ROOT_TERMS: usize = 64;
+
+impl NormalForm {
+    /// An enclosure of the value, from the enclosures of the symbols.
+    fn enclosure(&self) -> Interval {
+        TOWER.with(|t| {
+            let t = t.borrow();
+            self.0.iter().fold(Interval::point(0.0), |sum, (m, c)| {
+                let term = m
+                    .iter()
+                    .fold(enclose(c), |x, &s| x * t.enclosures[s as usize]);
+                sum + term
+            })
+        })
+    }
+
+    /// The square root of a positive value that is a square in the tower: `T` with `T * T`
+    /// equal to the form (checked in normal form, so a proof whether or not the symbols are
+    /// independent) and `T > 0` (by its enclosure). A distance whose square was expanded, as
+    /// `sqrt((a + b sqrt(p) + c sqrt(q))^2)` for a point reached along a line through a chain
+    /// of edges, is then that sum, and not a new symbol whose relation to it is lost.
+    ///
+    /// The root is sought as `X + Y s` for the form's last symbol `s` (of square `D`), with the
+    /// form `A + B s`: `X^2 + Y^2 D = A` and `2 X Y = B`; first with `Y` of one term, which
+    /// needs no further root, else from `X^2 = (A ± C) / 2` with `C^2 = A^2 - B^2 D`, roots
+    /// sought in turn, `depth` symbols deep.
+    fn root_in_tower(&self, depth: u32) -> Option<NormalForm> {
+        if self.0.len() > ROOT_TERMS {
+            return None;
+        }
+        let monomials: Vec<&Monomial> = self.0.keys().collect();
+        let root = self.signed_root(depth, &monomials)?;
+        match root.enclosure().sign()? {
+            Sign::Positive => Some(root),
+            Sign::Negative => Some(root.neg()),
+            Sign::Zero => None,
+        }
+    }
+
+    /// A form whose square is this one, of either sign: a rational's root as a rational
+    /// multiple of one of `monomials` (those of the radicand the search began with: their
+    /// radicands need not be of one square class, as `sqrt 6 = sqrt 2 sqrt 3`), else a new
+    /// radical; a form's as `X + Y s` ([`Self::root_with_monomial_part`], else `depth` levels
+    /// of [`Self::root_by_halves`]).
+    fn signed_root(&self, depth: u32, monomials: &[&Monomial]) -> Option<NormalForm> {
+        if let Some(r) = self.as_rational() {
+            if r.cmp0().is_lt() {
+                return None;
+            }
+            let multiple = monomials.iter().find_map(|&m| {
+                let q = rational_root(&(r.clone() / &monomial_square(m)?))?;
+                Some(NormalForm::monomial(q, m.clone()))
+            });
+            return Some(multiple.unwrap_or_else(|| sqrt_of_rational(&r)));
+        }
+        let s = *self.0.keys().filter_map(|m| m.last()).max()?;
+        let d = square_of(s)?;
+        let (mut a, mut b) = (NormalForm::default(), NormalForm::default());
+        for (m, c) in &self.0 {
+            match m.split_last() {
+                Some((&last, rest)) if last == s => b.0.insert(rest.to_vec(), c.clone()),
+                _ => a.0.insert(m.clone(), c.clone()),
+            };
+        }
+        let split = Split { a, b, s, d };
+        let with_monomial = split.root_with_monomial_part(self, monomials);
+        if with_monomial.is_some() || depth == 0 {
+            return with_monomial;
+        }
+        split.root_by_halves(self, depth, monomials)
+    }
+}
+
+/// A form `A + B s` split at its last symbol `s`, of square `D`, whose root is sought as
+/// `X + Y s`: `X^2 + Y^2 D = A` and `2 X Y = B`.
+struct Split {
+    a: NormalForm,
+    b: NormalForm,
+    s: u32,
+    d: NormalForm,
+}
+
+impl Split {
+    /// `X + Y s` if its square is `form`.
+    fn checked_root(
+        &self,
+        x: &NormalForm,
+        y: &NormalForm,
+        form: &NormalForm,
+    ) -> Option<NormalForm> {
+        let root = x.add(
+            &y.mul(&NormalForm::monomial(Rational::from(1), vec![self.s]))?,
+            1,
+        )?;
+        (root.mul(&root)? == *form).then_some(root)
+    }
+
+    /// The root where `Y = y M` is one term, `M` a product of symbols of rational square: a
+    /// sum of lengths along one line, `sqrt((c1 sqrt(r1) + ... + ck sqrt(rk))^2)`, has such a
+    /// root at every symbol. Then `X = B / (2 Y)`, and `v = Y^2` is rational: with the
+    /// rational parts `a0`, `d0`, `e0` of `A`, `D` and `B^2` (the symbols taken as
+    /// independent, for a guess that is checked), `d0 v^2 - a0 v + e0 / 4 = 0`.
+    fn root_with_monomial_part(
+        &self,
+        form: &NormalForm,
+        monomials: &[&Monomial],
+    ) -> Option<NormalForm> {
+        let b2 = self.b.mul(&self.b)?;
+        let [a0, d0, e0] = [&self.a, &self.d, &b2].map(NormalForm::rational_part);
+        let quarter = Rational::new(Integer::from(1), Integer::from(4))?;
+        let candidates: Vec<Rational> = if d0.is_zero() {
+            if a0.is_zero() {
+                return None;
+            }
+            vec![e0 * &quarter / &a0]
+        } else {
+            // v = (a0 ± sqrt(a0^2 - d0 e0)) / (2 d0)
+            let root = rational_root(&(a0.clone() * &a0 - &(d0.clone() * &e0)))?;
+            let twice = d0.clone() * &Rational::from(2);
+            vec![(a0.clone() + &root) / &twice, (a0 - &root) / &twice]
+        };
+        let empty = Vec::new();
+        let terms: Vec<&Monomial> = std::iter::once(&empty)
+            .chain(self.b.0.keys())
+            .chain(monomials.iter().copied())
+            .collect();
+        for v in candidates.into_iter().filter(|v| v.cmp0().is_gt()) {
+            for &m in &terms {
+                let Some(m2) = monomial_square(m) else {
+                    continue;
+                };
+                let Some(y) = rational_root(&(v.clone() / &m2)) else {
+                    continue;
+                };
+                // X = B / (2 y M) = B M / (2 y M^2).
+                let Some(x) = self
+                    .b
+                    .mul(&NormalForm::monomial(Rational::from(1), m.clone()))
+                    .map(|bm| {
+                        bm.scaled(&(Rational::from(1) / &(y.clone() * &m2 * &Rational::from(2))))
+                    })
+                else {
+                    continue;
+                };
+                let root = self.checked_root(&x, &NormalForm::monomial(y, m.clone()), form);
+                if root.is_some() {
+                    return root;
+                }
+            }
+        }
+        None
+    }
+
+    /// The root from `X^2 = (A ± C) / 2` with `C^2 = A^2 - B^2 D`, both roots sought in
+    /// turn ([`NormalForm::signed_root`], `depth - 1` levels), then `Y = B / (2 X)`.
+    fn root_by_halves(
+        &self,
+        form: &NormalForm,
+        depth: u32,
+        monomials: &[&Monomial],
+    ) -> Option<NormalForm> {
+        let n = self
+            .a
+            .mul(&self.a)?
+            .add(&self.b.mul(&self.b)?.mul(&self.d)?, -1)?;
+        let c = n.signed_root(depth - 1, monomials)?;
+        let half = Rational::new(Integer::from(1), Integer::from(2))?;
+        for sign in [1, -1] {
+            let root = self
+                .a
+                .add(&c, sign)
+                .and_then(|x2| x2.scaled(&half).signed_root(depth - 1, monomials))
+                .filter(|x| !x.is_zero())
+                .and_then(|x| {
+                    let y = self.b.div(&x.clone().scaled(&Rational::from(2)))?;
+                    self.checked_root(&x, &y, form)
+                });
+            if root.is_some() {
+                return root;
+            }
+        }
+        None
+    }
+}
+
+impl NormalForm {
+    /// The rational part (the coefficient of the empty monomial).
+    fn rational_part(&self) -> Rational {
+        self.0.get(&Vec::new()).cloned().unwrap_or_default()
+    }
+}
+
+/// The square of a monomial, if it is rational.
+fn monomial_square(m: &Monomial) -> Option<Rational> {
+    let one = NormalForm::monomial(Rational::from(1), m.clone());
+    one.mul(&one)?.as_rational()
+}
+
+/// The rational square root of a rational, if it has one.
+fn rational_root(r: &Rational) -> Option<Rational> {
+    if r.cmp0().is_lt() {
+        return None;
+    }
+    let (n, d) = (r.numer(), r.denom());
+    (n.is_perfect_square() && d.is_perfect_square())
+        .then(|| Rational::new(n.sqrt(), d.sqrt()))
+        .flatten()
 }
 
 impl NormalForm {
@@ -340,6 +576,70 @@ impl NormalForm {
         a.add(&b, -1)
             .is_some_and(|difference| difference.is_zero_by_squares(depth - 1))
     }
+}
+
+impl NormalForm {
+    /// Whether the form is zero, by eliminating its square roots one at a time: with `s` its
+    /// last square-root symbol (of square `D`, positive) and the form `A + B s`, the form is
+    /// zero when `A` and `B` have opposite signs (by their enclosures) and `A^2 - B^2 D`, free
+    /// of `s`, is zero in turn; then `|A| = |B| s`. A zero is a proof, whether or not the
+    /// symbols are independent (sums of distances `d1 + d2 = d3 + d4` of several radicals,
+    /// their radicands in turn of other radicals); `false` proves nothing.
+    fn is_zero_by_elimination(&self) -> bool {
+        let mut form = self.clone();
+        loop {
+            if form.is_zero() {
+                return true;
+            }
+            let Some(s) = form
+                .0
+                .keys()
+                .flatten()
+                .copied()
+                .filter(|&s| !is_atom(s))
+                .max()
+            else {
+                return false;
+            };
+            let Some(d) = square_of(s) else {
+                return false;
+            };
+            let (mut a, mut b) = (NormalForm::default(), NormalForm::default());
+            for (m, c) in &form.0 {
+                match m.iter().position(|&x| x == s) {
+                    Some(i) => {
+                        let mut rest = m.clone();
+                        rest.remove(i);
+                        b.0.insert(rest, c.clone());
+                    }
+                    None => {
+                        a.0.insert(m.clone(), c.clone());
+                    }
+                }
+            }
+            let opposite = matches!(
+                (a.enclosure().sign(), b.enclosure().sign()),
+                (Some(Sign::Positive), Some(Sign::Negative))
+                    | (Some(Sign::Negative), Some(Sign::Positive))
+            );
+            let Some(next) = opposite
+                .then(|| a.mul(&a)?.add(&b.mul(&b)?.mul(&d)?, -1))
+                .flatten()
+            else {
+                return false;
+            };
+            form = next;
+        }
+    }
+}
+
+/// Whether the node's normal form is zero by the elimination of its square roots
+/// ([`NormalForm::is_zero_by_elimination`]), over atoms where it has no normal form (see
+/// [`zero_over_atoms`]). Costly: asked only of a zero that nothing else could prove.
+pub(crate) fn zero_by_elimination(node: &Arc<Node>) -> bool {
+    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
+    let form = memoized(node).unwrap_or_else(|| over_atoms(node));
+    form.is_zero_by_elimination()
 }
 
 /// Whether the node's normal form is zero, by [`NormalForm::is_zero_by_squares`] where its
@@ -402,15 +702,10 @@ impl NormalForm {
         for &s in m {
             d = d * &square_of(s)?.as_rational()?;
         }
-        let c2 = p.clone() * p - &(q.clone() * q * &d);
-        if p.cmp0().is_le() || c2.cmp0().is_lt() {
+        if p.cmp0().is_le() {
             return None;
         }
-        let (n, den) = (c2.numer(), c2.denom());
-        if !(n.is_perfect_square() && den.is_perfect_square()) {
-            return None;
-        }
-        let c = Rational::new(n.sqrt(), den.sqrt())?;
+        let c = rational_root(&(p.clone() * p - &(q.clone() * q * &d)))?;
         let half = Rational::new(Integer::from(1), Integer::from(2))?;
         let larger = sqrt_of_rational(&((p.clone() + &c) * &half));
         let smaller = sqrt_of_rational(&((p.clone() - &c) * &half));
@@ -455,9 +750,11 @@ fn sqrt_of_rational(r: &Rational) -> NormalForm {
         match same {
             Some((id, factor)) => (id, factor.expect("a positive radicand")),
             None => {
-                let id = t.squares.len() as u32;
-                t.squares
-                    .push(Some(NormalForm::rational(Rational::from(m.clone()))));
+                let enclosure = enclose(&Rational::from(m.clone())).sqrt();
+                let id = t.push(
+                    Some(NormalForm::rational(Rational::from(m.clone()))),
+                    enclosure,
+                );
                 t.integer_radicals.entry(class).or_default().push((m, id));
                 (id, Rational::from(1))
             }
@@ -540,15 +837,19 @@ enum AtomKey {
 
 /// The atom of a key.
 fn keyed_atom(key: AtomKey) -> NormalForm {
-    let id = TOWER.with(|t| {
-        let mut t = t.borrow_mut();
-        if let Some(id) = t.keyed_atoms.get(&key) {
-            return *id;
-        }
-        let id = t.squares.len() as u32;
-        t.squares.push(None);
-        t.keyed_atoms.insert(key, id);
-        id
+    let known = TOWER.with(|t| t.borrow().keyed_atoms.get(&key).copied());
+    let id = known.unwrap_or_else(|| {
+        let enclosure = match &key {
+            AtomKey::Form(f) => f.enclosure(),
+            AtomKey::Product([f, g]) => f.enclosure() * g.enclosure(),
+            AtomKey::Quotient([f, g]) => f.enclosure() / g.enclosure(),
+        };
+        TOWER.with(|t| {
+            let mut t = t.borrow_mut();
+            let id = t.push(None, enclosure);
+            t.keyed_atoms.insert(key, id);
+            id
+        })
     });
     NormalForm::monomial(Rational::from(1), vec![id])
 }
@@ -569,8 +870,7 @@ fn atom(node: &Arc<Node>) -> NormalForm {
         if let Some((id, _)) = t.atoms.get(&key) {
             return *id;
         }
-        let id = t.squares.len() as u32;
-        t.squares.push(None);
+        let id = t.push(None, node.filter);
         t.atoms.insert(key, (id, node.clone()));
         id
     });
