@@ -350,3 +350,61 @@ fn an_octahedron_corner_an_ulp_from_another_is_traced_to_in_every_backend() {
     .expect("usable mesh");
     assert_traced_straight(&mesh, 0, 5, straight(&mesh, 0, 5));
 }
+
+/// A grid of unit steps along `(0.6, 0.8)` (rotated in floats) with heights in {-1, 0, 1},
+/// where `v12` was moved onto the edge `(v9, v10)` at 1e-7 of it: `v8`, `v9`, `v12` and `v10`
+/// lie on one line, and the sliver `(v8, v9, v12)` leaves `v9` 3e-16 off its opposite edge
+/// `(v8, v12)` (of length 1.41), too little for the mesh to call the face degenerate (a
+/// side of 1.4e-7 rounded at coordinates of 2 has its direction only to 1e-9). `v11` lies in
+/// the one face `(v8, v12, v11)` beyond that edge, and the geodesic to it runs through the
+/// saddle `v9` and across the sliver: its length is at most `d(v9) + |v9 v11|` plus twice the
+/// height. The float backends kept no window as narrow as that height on the edge and
+/// reached `v11` around `v12`, 1.7e-7 long. Checked against that path and the exact backend
+/// (an exhaustive unfolding in f64 loses the same window).
+#[test]
+fn a_saddle_on_its_opposite_edge_at_float_resolution_lights_the_face_beyond_it_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.0, 0.0, 1.0],
+            [0.6, 0.8, -1.0],
+            [1.2, 1.6, 1.0],
+            [1.7999999999999998, 2.4000000000000004, 1.0],
+            [-0.20000000000000007, 1.4, 0.0],
+            [0.3999999999999999, 2.2, -1.0],
+            [-1.0, 2.0, -1.0],
+            [-0.7500000000000004, 4.0, 0.5],
+            [-2.4000000000000004, 1.7999999999999998, 1.0],
+            [-1.8000000000000003, 2.5999999999999996, 0.0],
+            [-1.2000000000000004, 3.4, -1.0],
+            [-3.2, 2.4, 0.0],
+            [-1.7999999400000002, 2.60000008, -1e-07],
+        ],
+        vec![
+            [0, 1, 4],
+            [1, 2, 5],
+            [2, 3, 5],
+            [4, 7, 6],
+            [6, 9, 8],
+            [6, 7, 9],
+            [7, 10, 9],
+            [8, 9, 12],
+            [8, 12, 11],
+            [9, 10, 12],
+        ],
+    )
+    .expect("usable mesh");
+    let exact = distances::<Real>(&mesh, 3)[11];
+    for (backend, d) in every_backend(&mesh, 3) {
+        let through_v9 = d[9] + straight(&mesh, 9, 11) + 1e-15;
+        assert!(
+            d[11] <= through_v9 * (1.0 + 1e-12),
+            "{backend}: d(v11) = {} beyond d(v9) + |v9 v11| = {through_v9}",
+            d[11]
+        );
+        assert!(
+            (d[11] - exact).abs() <= 1e-12 * exact,
+            "{backend}: d(v11) = {}, exact {exact}",
+            d[11]
+        );
+    }
+}

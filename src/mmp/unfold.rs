@@ -423,15 +423,13 @@ impl<S: Scalar> Unfolding<S> {
         EdgeFrame::new(mesh, v0, v1).map(|frame| frame.planar(p))
     }
 
-    /// Whether a point (in the frame of edge `e`) lies on the edge strictly between its ends.
+    /// Whether a point (in the frame of edge `e`) lies on the edge strictly between its ends,
+    /// on its line as the number type resolves heights ([`Scalar::on_line`]).
     pub(crate) fn is_inside(&self, e: EdgeId, at: &Planar<S>) -> bool {
-        at.y.sign() == Sign::Zero && self.is_over(e, at)
-    }
-
-    /// Whether a point (in the frame of edge `e`) lies strictly between the ends of the edge
-    /// along it, at whatever height: the foot of its perpendicular is inside the edge.
-    pub(crate) fn is_over(&self, e: EdgeId, at: &Planar<S>) -> bool {
-        at.x.sign() == Sign::Positive && at.x.compare(self.length(e)) == Ordering::Less
+        let length = self.length(e);
+        at.x.sign() == Sign::Positive
+            && at.x.compare(length) == Ordering::Less
+            && S::on_line(&at.y, length)
     }
 
     /// A surface point's position in space, in scaled coordinates.

@@ -54,6 +54,10 @@ impl Resolution {
     /// [`Resolution::EXTENT`] let wedges claim vertices beyond their ranges on edges 1e8 times
     /// longer than the distances at hand, 3e-6 of a distance short.
     pub const WITHIN: f64 = 64.0 * f64::EPSILON;
+    /// A point this close to an edge's line (as a fraction of the edge's length, `2^-46`, as
+    /// [`Resolution::WITHIN`]) lies on it ([`Scalar::on_line`]): heights are rounded
+    /// constructions, and the rays through a corner at such a height are rounding too.
+    pub const ON_LINE: f64 = 64.0 * f64::EPSILON;
     /// Two images of one pseudo-source whose positions and sigmas agree to this fraction of
     /// the range's scale (or of their distance from the edge) are one image reached by two
     /// ways ([`Scalar::same_image`]): each way rounds its own chain of unfoldings, a few ulps
@@ -356,6 +360,12 @@ impl Scalar for Adaptive {
     fn within(x: &Self, lo: &Self, hi: &Self, scale: &Self) -> bool {
         let slack = Resolution::WITHIN * scale.0;
         x.0 >= lo.0 - slack && x.0 <= hi.0 + slack
+    }
+
+    /// At the resolution of constructed heights ([`Resolution::ON_LINE`]).
+    #[inline(always)]
+    fn on_line(height: &Self, length: &Self) -> bool {
+        height.0 <= Resolution::ON_LINE * length.0
     }
 
     /// `A = B = C = 0` holds exactly when the two functions have equal `x`, `|y|` and `sigma`,

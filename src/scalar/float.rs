@@ -31,6 +31,12 @@ impl FloatTolerance {
     /// the distances at hand, 1e-9 gave distances 2 % short, and on edges 1e8 times longer,
     /// 1e-12 gave 3e-7.
     pub const WITHIN: f64 = 64.0 * f64::EPSILON;
+    /// A point this close to an edge's line (as a fraction of the edge's length, `2^-46`, as
+    /// [`FloatTolerance::WITHIN`]) lies on it ([`Scalar::on_line`]): a corner of a face whose
+    /// height over its opposite edge is rounding. Heights of a few ulps of a unit edge, from a
+    /// vertex moved onto the edge, made windows as narrow, lost beside their neighbours, and
+    /// the geodesics through the corner went round it (1e-9 of a distance long).
+    pub const ON_LINE: f64 = 64.0 * f64::EPSILON;
     /// Two wedges whose pseudo-sources and sigmas agree to this fraction of their size have
     /// the same distance function: eq. (2) has infinitely many solutions. Two images of one
     /// pseudo-source that agree to this fraction of their range's scale are one image.
@@ -111,6 +117,11 @@ impl Scalar for f64 {
     fn within(x: &Self, lo: &Self, hi: &Self, scale: &Self) -> bool {
         let slack = FloatTolerance::WITHIN * scale;
         *x >= lo - slack && *x <= hi + slack
+    }
+
+    #[inline(always)]
+    fn on_line(height: &Self, length: &Self) -> bool {
+        *height <= FloatTolerance::ON_LINE * length
     }
 
     /// Within [`FloatTolerance::SAME_SOURCE`] of the size of the values compared (the

@@ -184,6 +184,13 @@ pub trait Scalar: Field {
     /// Whether `x` lies in `[lo, hi]` on an edge of length `scale` (closed range).
     fn within(x: &Self, lo: &Self, hi: &Self, scale: &Self) -> bool;
 
+    /// Whether a point at `height >= 0` over the line of an edge of length `length` lies on
+    /// that line: the middle corner of a degenerate face is then a point of its opposite edge
+    /// [MMP87]. Exactly zero for number types whose constructions are exact; a number type
+    /// that rounds them cannot tell a height at its resolution from zero, and the rays through
+    /// such a corner turn by that height over their length.
+    fn on_line(height: &Self, length: &Self) -> bool;
+
     /// Whether two wedges have the same distance function on a range of length about `scale`:
     /// the case `A = B = C = 0` of eq. (2) with infinitely many solutions (Example 1 [LZT §3]).
     fn same_distance_function(

@@ -548,6 +548,10 @@ impl Scalar for Real {
         x.compare(lo) != Ordering::Less && x.compare(hi) != Ordering::Greater
     }
 
+    fn on_line(height: &Self, _length: &Self) -> bool {
+        height.sign() == Sign::Zero
+    }
+
     fn same_distance_function(
         a: &SourceDistance<Self>,
         b: &SourceDistance<Self>,
