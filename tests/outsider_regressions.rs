@@ -408,3 +408,45 @@ fn a_saddle_on_its_opposite_edge_at_float_resolution_lights_the_face_beyond_it_i
         );
     }
 }
+
+/// A fan of four faces round `v3` (angles summing to 3.1535, above pi) between `v0` and the
+/// unwelded copy `v6` of it; `v3` lies one ulp from `v0` (coordinates of about 0.7), and `v4`
+/// 1e-12 away. The geodesic from `v0` to `v6` crosses the fan, so it runs through `v3`:
+/// `d = |v0 v3| + |v3 v6| = 3.3e-16`, both ways. The float backends' tolerances, as fractions
+/// of the unit edges, exceeded the whole configuration: from `v0` a wedge claimed `v6` 1e-20
+/// beyond its range by a straight line (1.8e-5 short); from `v6` (once taken onto the edge
+/// `(v3, v5)`, 1.2e-16 from it) 30 % short.
+#[test]
+fn vertices_an_ulp_from_a_unit_edge_s_end_keep_their_distances_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.7443580490747195, 0.5982135835632504, -0.2967686021433053],
+            [
+                -0.7443580482391918,
+                -0.5982135716232996,
+                0.29676859461074495,
+            ],
+            [
+                -0.7443580490747196,
+                -0.5982135835632505,
+                0.29676860214330536,
+            ],
+            [0.7443580490747196, 0.5982135835632505, -0.29676860214330536],
+            [0.7443580490740715, 0.5982135835621164, -0.29676860214384737],
+            [-0.09626774182948816, 0.5358963579278502, 0.8387774528697804],
+            [0.7443580490747195, 0.5982135835632504, -0.2967686021433053],
+        ],
+        vec![[4, 1, 3], [4, 3, 0], [5, 3, 1], [5, 6, 3]],
+    )
+    .expect("usable mesh");
+    let want = straight(&mesh, 0, 3) + straight(&mesh, 3, 6);
+    for (from, to) in [(0, 6), (6, 0)] {
+        for (backend, d) in every_backend(&mesh, from) {
+            assert!(
+                (d[to] - want).abs() <= 1e-12 * want,
+                "{backend}: d(v{from}, v{to}) = {:e}, want {want:e}",
+                d[to]
+            );
+        }
+    }
+}

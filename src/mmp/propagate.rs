@@ -709,7 +709,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
             (Some(paths), Some(p)) => paths.length(mesh, &p, apex_distance),
             _ => apex_distance(),
         });
-        let apex = S::within(&layout.apex_shadow(&s), &w.b0, &w.b1, &w.reach(length)).then(|| {
+        let shadow = layout.apex_shadow(&s);
+        let reach = || layout.shadow_reach(&s, &shadow);
+        let apex = S::within(&shadow, &w.b0, &w.b1, reach).then(|| {
             let d = S::kept(&at_apex).unwrap_or_else(apex_distance);
             (layout.apex_vertex(), d)
         });

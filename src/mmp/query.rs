@@ -176,7 +176,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 let depth = w.source_y.clone() + &at.y;
                 Some(w.source_x.clone() + (at.x.clone() - &w.source_x) * &w.source_y / depth)
             };
-            if crossing.is_some_and(|c| !S::within(&c, &w.b0, &w.b1, length)) {
+            if crossing.is_some_and(|c| !S::within(&c, &w.b0, &w.b1, || length.clone())) {
                 continue;
             }
             let dx = at.x.clone() - &w.source_x;

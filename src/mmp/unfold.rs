@@ -429,7 +429,7 @@ impl<S: Scalar> Unfolding<S> {
         let length = self.length(e);
         at.x.sign() == Sign::Positive
             && at.x.compare(length) == Ordering::Less
-            && S::on_line(&at.y, length)
+            && S::on_line(&at.y, &at.x, length)
     }
 
     /// A surface point's position in space, in scaled coordinates.
@@ -622,6 +622,19 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
     pub(crate) fn apex_shadow(&self, s: &Planar<S>) -> S {
         let depth = s.y.clone() + self.apex_h;
         s.x.clone() + (self.apex_x.clone() - &s.x) * &s.y / depth
+    }
+
+    /// The size of the offsets [`FaceLayout::apex_shadow`] builds the shadow of the apex from
+    /// `s` with, and of the shadow itself: it is known to ulps of these, not of the edge's
+    /// length. Near the frame's first end, where the vertices of short distances lie, that is
+    /// far finer than the edge: on an edge of length 1.41 whose pseudo-source and apex lay
+    /// 1e-16 from that end, a slack of ulps of the edge let the wedge claim the apex 1e-20
+    /// beyond its range, by a straight line shorter than the geodesic round the range's end.
+    pub(crate) fn shadow_reach(&self, s: &Planar<S>, shadow: &S) -> S {
+        let size = |x: &S| S::max_of(x, &-x.clone());
+        [size(&s.x), s.y.clone(), size(self.apex_x)]
+            .iter()
+            .fold(size(shadow), |m, c| S::max_of(&m, c))
     }
 
     /// Squared distance from `s` to the apex.

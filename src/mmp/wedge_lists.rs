@@ -428,12 +428,12 @@ impl<S: Scalar> WedgeLists<S> {
             }
             let (entry, event) = match piece.owner {
                 Owner::New => {
-                    let reach = w.reach(length);
-                    if S::within(&zero, &piece.lo, &piece.hi, &reach) {
+                    let reach = || w.reach(length);
+                    if S::within(&zero, &piece.lo, &piece.hi, reach) {
                         let d = S::kept(&kept.at_ends[0]).unwrap_or_else(|| mine.at(&zero));
                         arrivals.reach(v0, d, (w, kept));
                     }
-                    if S::within(length, &piece.lo, &piece.hi, &reach) {
+                    if S::within(length, &piece.lo, &piece.hi, reach) {
                         let d = S::kept(&kept.at_ends[1]).unwrap_or_else(|| mine.at(length));
                         arrivals.reach(v1, d, (w, kept));
                     }
