@@ -354,3 +354,35 @@ fn pseudo_sources_a_micron_apart_beside_a_long_edge_are_two_in_every_backend() {
         );
     }
 }
+
+/// The `degeneracy` corpus's exact case of seed 5 that was refused: the geodesic from `v16`
+/// to `v45` crosses the edge `(v28, v36)`, 5e8 long, 0.03 from `v36`, and then, 1e-9 further
+/// on, the next edge. The exact backend's frame of that edge starts at `v28`, and the crossing
+/// was placed in space from there (a fraction of the edge, to ulps of 5e8): 7e-8 off, and the
+/// traced path as much longer than its distance, which the trace then refused. Every backend
+/// traces the path at the length of its distance, and the distances agree.
+#[test]
+fn a_path_crossing_a_long_edge_near_its_far_end_has_its_distance_s_length_in_every_backend() {
+    let mesh = common::data_mesh("mixed_magnitudes_seed5_exact.obj");
+    fn traced<S: exact_geodesics::Scalar>(mesh: &TriMesh) -> (f64, f64) {
+        let field = propagate::<S>(
+            mesh,
+            &[SurfacePoint::Vertex(VertexId(16))],
+            &PropagateOptions::default(),
+        )
+        .expect("valid source");
+        let path = field
+            .trace_back(&SurfacePoint::Vertex(VertexId(45)))
+            .expect("v45 is reached, so a path leads back");
+        (path.length(), path.distance)
+    }
+    let exact = traced::<Real>(&mesh).1;
+    for (backend, (length, distance)) in [
+        ("f64", traced::<f64>(&mesh)),
+        ("adaptive", traced::<Adaptive>(&mesh)),
+        ("exact", traced::<Real>(&mesh)),
+    ] {
+        assert_close(length, distance, &format!("{backend} path length"));
+        assert_close(distance, exact, &format!("{backend} d(v45)"));
+    }
+}

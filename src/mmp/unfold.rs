@@ -358,11 +358,19 @@ impl<S: Scalar> Unfolding<S> {
     }
 
     /// The point at position `x` in the frame of `e`, in space (the model's coordinates),
-    /// placed from the frame's first end: to ulps of `x`, not of the edge's length.
+    /// placed from the nearer end: to ulps of its offset from that end, not of the edge's
+    /// length. (An exact backend's frames keep the mesh's order: a point 1e-4 from the far end
+    /// of an edge 1e8 long, placed from the first end, was 7e-8 off, and its path as much too
+    /// long.)
     pub(crate) fn edge_position(&self, mesh: &TriMesh, e: EdgeId, x: &S) -> DVec3 {
         let [a, b] = self.ends(mesh, e).map(|v| mesh.position(v));
-        let t = (x.clone() / self.length(e)).to_f64().clamp(0.0, 1.0);
-        a + t * (b - a)
+        let length = self.length(e);
+        let t = (x.clone() / length).to_f64().clamp(0.0, 1.0);
+        if t <= 0.5 {
+            return a + t * (b - a);
+        }
+        let u = ((length.clone() - x) / length).to_f64().clamp(0.0, 1.0);
+        b + u * (a - b)
     }
 
     /// The point at position `x` in the frame of `e`, named by its fraction from `vertices[0]`.
