@@ -359,7 +359,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         let path = GeodesicPath {
             points,
             simplices: trail.points.clone(),
-            distance: self.unfolding.to_model(distance.to_f64()),
+            distance: self.model_f64(distance),
             source,
         };
         if !path.is_as_long_as_its_distance(TRACE_LENGTH) {

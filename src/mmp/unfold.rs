@@ -68,8 +68,9 @@ struct EdgeFrame<S> {
     direction: [S; 3],
     /// `|direction|`.
     norm: S,
-    /// The power of two the edge vector was multiplied by.
-    power: f64,
+    /// The powers of two the edge vector was multiplied by (two where their product leaves
+    /// `f64`'s range).
+    power: [f64; 2],
 }
 
 impl<S: Scalar> EdgeFrame<S> {
@@ -77,13 +78,26 @@ impl<S: Scalar> EdgeFrame<S> {
     fn new(mesh: &TriMesh, v0: VertexId, v1: VertexId) -> Option<Self> {
         let scale = mesh.unit_scale();
         let (p0, p1) = (mesh.position(v0), mesh.position(v1));
-        let largest = (0..3).fold(0.0f64, |m, i| m.max((p1[i] * scale - p0[i] * scale).abs()));
-        if largest == 0.0 {
+        if p0 == p1 {
             return None;
         }
-        let power = normalizing_power(largest);
+        let largest = (0..3).fold(0.0f64, |m, i| m.max((p1[i] * scale - p0[i] * scale).abs()));
+        // An edge whose scaled length is below `f64`'s normal range: only a number type that
+        // measures such edges gets here (the others refuse the mesh), and its factor is taken
+        // in two powers of two, from the edge's length in the model's units; in one, it would
+        // overflow (an edge of 1e-113 in a model of 1e211).
+        let power = if largest >= f64::MIN_POSITIVE {
+            [normalizing_power(largest), 1.0]
+        } else if S::measures_below_float_resolution() {
+            let model = (0..3).fold(0.0f64, |m, i| m.max((p1[i] - p0[i]).abs()));
+            [normalizing_power(model), scale.recip()]
+        } else if largest == 0.0 {
+            return None;
+        } else {
+            [normalizing_power(largest), 1.0]
+        };
         let origin = vertex_point::<S>(mesh, v0);
-        let factor = S::from_f64(power);
+        let factor = S::from_f64(power[0]) * &S::from_f64(power[1]);
         let direction = sub(&vertex_point::<S>(mesh, v1), &origin).map(|c: S| c * &factor);
         let norm = dot(&direction, &direction).sqrt();
         Some(EdgeFrame {
@@ -96,7 +110,9 @@ impl<S: Scalar> EdgeFrame<S> {
 
     /// The edge's length (scaled coordinates).
     fn length(&self) -> S {
-        self.norm.clone() * &S::from_f64(self.power.recip())
+        self.norm.clone()
+            * &S::from_f64(self.power[0].recip())
+            * &S::from_f64(self.power[1].recip())
     }
 
     /// The coordinates of `p` in the frame: `x` along the edge, `y >= 0` its distance from
