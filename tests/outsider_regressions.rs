@@ -450,3 +450,52 @@ fn vertices_an_ulp_from_a_unit_edge_s_end_keep_their_distances_in_every_backend(
         }
     }
 }
+
+/// A square pyramid of height 1 (rotated about its axis in floats) whose apex `v0` has a copy
+/// `v1` one ulp above it, and whose corner `v5` was moved to 1e-9 of the apex (a needle),
+/// with an unwelded copy `v8`. From `v5`, `v1` is reached by the edge `(v5, v0)` and the
+/// ulp-long edge `(v0, v1)`: `d = |v5 v0| + |v0 v1|` both ways, in every backend. From `v5`
+/// the float backends gave `v1` 6.5e-17 less (4.6e-8 relative, the straight line in space):
+/// the wedge of `v5` on the unit edge `(v1, v2)` claimed its end `v1` 2.6e-16 beyond its range,
+/// within a slack of ulps of the edge's length.
+#[test]
+fn a_vertex_an_ulp_above_a_needle_s_apex_is_reached_round_the_apex_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.0, 0.0, 1.0],
+            [0.0, 0.0, 1.0000000000000002],
+            [-0.3928203230275509, 0.9196152422706633, 0.0],
+            [-0.992820323027551, 0.11961524227066339, 0.0],
+            [-0.6000000000000001, -0.7999999999999999, 0.0],
+            [3.9282032302755055e-10, -9.196152422706634e-10, 0.999999999],
+            [0.992820323027551, -0.119615242270663, 0.0],
+            [0.0, 0.0, 0.0],
+            [3.9282032302755055e-10, -9.196152422706634e-10, 0.999999999],
+        ],
+        vec![
+            [0, 1, 2],
+            [0, 2, 3],
+            [0, 3, 4],
+            [0, 4, 5],
+            [0, 8, 6],
+            [0, 6, 1],
+            [7, 2, 1],
+            [7, 3, 2],
+            [7, 4, 3],
+            [7, 5, 4],
+            [7, 6, 5],
+            [7, 1, 6],
+        ],
+    )
+    .expect("usable mesh");
+    let want = straight(&mesh, 5, 0) + straight(&mesh, 0, 1);
+    for (from, to) in [(5, 1), (1, 5)] {
+        for (backend, d) in every_backend(&mesh, from) {
+            assert!(
+                (d[to] - want).abs() <= 1e-12 * want,
+                "{backend}: d(v{from}, v{to}) = {:e}, want {want:e}",
+                d[to]
+            );
+        }
+    }
+}
