@@ -354,3 +354,74 @@ fn pseudo_sources_a_micron_apart_beside_a_long_edge_are_two_in_every_backend() {
         );
     }
 }
+
+/// The `degeneracy` corpus's exact case of seed 5 that was refused: the geodesic from `v16`
+/// to `v45` crosses the edge `(v28, v36)`, 5e8 long, 0.03 from `v36`, and then, 1e-9 further
+/// on, the next edge. The exact backend's frame of that edge starts at `v28`, and the crossing
+/// was placed in space from there (a fraction of the edge, to ulps of 5e8): 7e-8 off, and the
+/// traced path as much longer than its distance, which the trace then refused. Every backend
+/// traces the path at the length of its distance, and the distances agree.
+#[test]
+fn a_path_crossing_a_long_edge_near_its_far_end_has_its_distance_s_length_in_every_backend() {
+    let mesh = common::data_mesh("mixed_magnitudes_seed5_exact.obj");
+    fn traced<S: exact_geodesics::Scalar>(mesh: &TriMesh) -> (f64, f64) {
+        let field = propagate::<S>(
+            mesh,
+            &[SurfacePoint::Vertex(VertexId(16))],
+            &PropagateOptions::default(),
+        )
+        .expect("valid source");
+        let path = field
+            .trace_back(&SurfacePoint::Vertex(VertexId(45)))
+            .expect("v45 is reached, so a path leads back");
+        (path.length(), path.distance)
+    }
+    let exact = traced::<Real>(&mesh).1;
+    for (backend, (length, distance)) in [
+        ("f64", traced::<f64>(&mesh)),
+        ("adaptive", traced::<Adaptive>(&mesh)),
+        ("exact", traced::<Real>(&mesh)),
+    ] {
+        assert_close(length, distance, &format!("{backend} path length"));
+        assert_close(distance, exact, &format!("{backend} d(v45)"));
+    }
+}
+
+/// An edge of 3.7e-113 in a model of 1e211: in the engine's coordinates (scaled by a power of
+/// two that brings the largest to about 1) its length is 1e-324, below `f64`'s range. The
+/// float backends refuse the mesh; the exact backend took the edge's ends for one point (its
+/// frame was decided on scaled `f64` differences, which underflowed) and gave d(v1) = 0 from
+/// `v0`, with the path refused at its true length. The edge itself is the geodesic.
+#[test]
+fn an_edge_1e_324_of_its_model_is_measured_by_the_exact_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.0, 0.0, 0.0],
+            [0.0, 2.598852441411225e-113, 2.598852441411225e-113],
+            [5.260135901548374e210, 0.0, 0.0],
+            [0.0, 0.0, 1.0520271803096747e211],
+        ],
+        vec![[0, 1, 2], [0, 2, 3], [1, 3, 2]],
+    )
+    .expect("usable mesh");
+    assert_eq!(mesh.validation().float_unresolved_edges.len(), 1);
+    let sources = [SurfacePoint::Vertex(VertexId(0))];
+    assert!(matches!(
+        propagate::<f64>(&mesh, &sources, &PropagateOptions::default()),
+        Err(PointError::BeyondFloatRange { .. })
+    ));
+    for (from, to) in [(0, 1), (1, 0)] {
+        let d = distances::<Real>(&mesh, from);
+        assert_close(
+            d[to],
+            straight(&mesh, 0, 1),
+            &format!("exact d(v{from}, v{to})"),
+        );
+    }
+    let field = propagate::<Real>(&mesh, &sources, &PropagateOptions::default())
+        .expect("the exact backend measures the mesh");
+    let path = field
+        .trace_back(&SurfacePoint::Vertex(VertexId(1)))
+        .expect("v1 is reached, so a path leads back");
+    assert_close(path.length(), path.distance, "exact path length");
+}

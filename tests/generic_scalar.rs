@@ -91,8 +91,11 @@ impl Scalar for CloneOnly {
     fn has_extent(lo: &Self, hi: &Self, scale: &Self) -> bool {
         f64::has_extent(&lo.0, &hi.0, &scale.0)
     }
-    fn within(x: &Self, lo: &Self, hi: &Self, scale: &Self) -> bool {
-        f64::within(&x.0, &lo.0, &hi.0, &scale.0)
+    fn within(x: &Self, lo: &Self, hi: &Self, scale: impl FnOnce() -> Self) -> bool {
+        f64::within(&x.0, &lo.0, &hi.0, || scale().0)
+    }
+    fn on_line(height: &Self, x: &Self, length: &Self) -> bool {
+        f64::on_line(&height.0, &x.0, &length.0)
     }
     fn same_distance_function(
         a: &SourceDistance<Self>,

@@ -350,3 +350,152 @@ fn an_octahedron_corner_an_ulp_from_another_is_traced_to_in_every_backend() {
     .expect("usable mesh");
     assert_traced_straight(&mesh, 0, 5, straight(&mesh, 0, 5));
 }
+
+/// A grid of unit steps along `(0.6, 0.8)` (rotated in floats) with heights in {-1, 0, 1},
+/// where `v12` was moved onto the edge `(v9, v10)` at 1e-7 of it: `v8`, `v9`, `v12` and `v10`
+/// lie on one line, and the sliver `(v8, v9, v12)` leaves `v9` 3e-16 off its opposite edge
+/// `(v8, v12)` (of length 1.41), too little for the mesh to call the face degenerate (a
+/// side of 1.4e-7 rounded at coordinates of 2 has its direction only to 1e-9). `v11` lies in
+/// the one face `(v8, v12, v11)` beyond that edge, and the geodesic to it runs through the
+/// saddle `v9` and across the sliver: its length is at most `d(v9) + |v9 v11|` plus twice the
+/// height. The float backends kept no window as narrow as that height on the edge and
+/// reached `v11` around `v12`, 1.7e-7 long. Checked against that path and the exact backend
+/// (an exhaustive unfolding in f64 loses the same window).
+#[test]
+fn a_saddle_on_its_opposite_edge_at_float_resolution_lights_the_face_beyond_it_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.0, 0.0, 1.0],
+            [0.6, 0.8, -1.0],
+            [1.2, 1.6, 1.0],
+            [1.7999999999999998, 2.4000000000000004, 1.0],
+            [-0.20000000000000007, 1.4, 0.0],
+            [0.3999999999999999, 2.2, -1.0],
+            [-1.0, 2.0, -1.0],
+            [-0.7500000000000004, 4.0, 0.5],
+            [-2.4000000000000004, 1.7999999999999998, 1.0],
+            [-1.8000000000000003, 2.5999999999999996, 0.0],
+            [-1.2000000000000004, 3.4, -1.0],
+            [-3.2, 2.4, 0.0],
+            [-1.7999999400000002, 2.60000008, -1e-07],
+        ],
+        vec![
+            [0, 1, 4],
+            [1, 2, 5],
+            [2, 3, 5],
+            [4, 7, 6],
+            [6, 9, 8],
+            [6, 7, 9],
+            [7, 10, 9],
+            [8, 9, 12],
+            [8, 12, 11],
+            [9, 10, 12],
+        ],
+    )
+    .expect("usable mesh");
+    let exact = distances::<Real>(&mesh, 3)[11];
+    for (backend, d) in every_backend(&mesh, 3) {
+        let through_v9 = d[9] + straight(&mesh, 9, 11) + 1e-15;
+        assert!(
+            d[11] <= through_v9 * (1.0 + 1e-12),
+            "{backend}: d(v11) = {} beyond d(v9) + |v9 v11| = {through_v9}",
+            d[11]
+        );
+        assert!(
+            (d[11] - exact).abs() <= 1e-12 * exact,
+            "{backend}: d(v11) = {}, exact {exact}",
+            d[11]
+        );
+    }
+}
+
+/// A fan of four faces round `v3` (angles summing to 3.1535, above pi) between `v0` and the
+/// unwelded copy `v6` of it; `v3` lies one ulp from `v0` (coordinates of about 0.7), and `v4`
+/// 1e-12 away. The geodesic from `v0` to `v6` crosses the fan, so it runs through `v3`:
+/// `d = |v0 v3| + |v3 v6| = 3.3e-16`, both ways. The float backends' tolerances, as fractions
+/// of the unit edges, exceeded the whole configuration: from `v0` a wedge claimed `v6` 1e-20
+/// beyond its range by a straight line (1.8e-5 short); from `v6` (once taken onto the edge
+/// `(v3, v5)`, 1.2e-16 from it) 30 % short.
+#[test]
+fn vertices_an_ulp_from_a_unit_edge_s_end_keep_their_distances_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.7443580490747195, 0.5982135835632504, -0.2967686021433053],
+            [
+                -0.7443580482391918,
+                -0.5982135716232996,
+                0.29676859461074495,
+            ],
+            [
+                -0.7443580490747196,
+                -0.5982135835632505,
+                0.29676860214330536,
+            ],
+            [0.7443580490747196, 0.5982135835632505, -0.29676860214330536],
+            [0.7443580490740715, 0.5982135835621164, -0.29676860214384737],
+            [-0.09626774182948816, 0.5358963579278502, 0.8387774528697804],
+            [0.7443580490747195, 0.5982135835632504, -0.2967686021433053],
+        ],
+        vec![[4, 1, 3], [4, 3, 0], [5, 3, 1], [5, 6, 3]],
+    )
+    .expect("usable mesh");
+    let want = straight(&mesh, 0, 3) + straight(&mesh, 3, 6);
+    for (from, to) in [(0, 6), (6, 0)] {
+        for (backend, d) in every_backend(&mesh, from) {
+            assert!(
+                (d[to] - want).abs() <= 1e-12 * want,
+                "{backend}: d(v{from}, v{to}) = {:e}, want {want:e}",
+                d[to]
+            );
+        }
+    }
+}
+
+/// A square pyramid of height 1 (rotated about its axis in floats) whose apex `v0` has a copy
+/// `v1` one ulp above it, and whose corner `v5` was moved to 1e-9 of the apex (a needle),
+/// with an unwelded copy `v8`. From `v5`, `v1` is reached by the edge `(v5, v0)` and the
+/// ulp-long edge `(v0, v1)`: `d = |v5 v0| + |v0 v1|` both ways, in every backend. From `v5`
+/// the float backends gave `v1` 6.5e-17 less (4.6e-8 relative, the straight line in space):
+/// the wedge of `v5` on the unit edge `(v1, v2)` claimed its end `v1` 2.6e-16 beyond its range,
+/// within a slack of ulps of the edge's length.
+#[test]
+fn a_vertex_an_ulp_above_a_needle_s_apex_is_reached_round_the_apex_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.0, 0.0, 1.0],
+            [0.0, 0.0, 1.0000000000000002],
+            [-0.3928203230275509, 0.9196152422706633, 0.0],
+            [-0.992820323027551, 0.11961524227066339, 0.0],
+            [-0.6000000000000001, -0.7999999999999999, 0.0],
+            [3.9282032302755055e-10, -9.196152422706634e-10, 0.999999999],
+            [0.992820323027551, -0.119615242270663, 0.0],
+            [0.0, 0.0, 0.0],
+            [3.9282032302755055e-10, -9.196152422706634e-10, 0.999999999],
+        ],
+        vec![
+            [0, 1, 2],
+            [0, 2, 3],
+            [0, 3, 4],
+            [0, 4, 5],
+            [0, 8, 6],
+            [0, 6, 1],
+            [7, 2, 1],
+            [7, 3, 2],
+            [7, 4, 3],
+            [7, 5, 4],
+            [7, 6, 5],
+            [7, 1, 6],
+        ],
+    )
+    .expect("usable mesh");
+    let want = straight(&mesh, 5, 0) + straight(&mesh, 0, 1);
+    for (from, to) in [(5, 1), (1, 5)] {
+        for (backend, d) in every_backend(&mesh, from) {
+            assert!(
+                (d[to] - want).abs() <= 1e-12 * want,
+                "{backend}: d(v{from}, v{to}) = {:e}, want {want:e}",
+                d[to]
+            );
+        }
+    }
+}

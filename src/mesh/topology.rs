@@ -292,9 +292,11 @@ impl Topology {
         let scaled = |v: usize| positions[v] * unit_scale;
         let mut edge_length = Vec::with_capacity(edges.len());
         for (ei, e) in edges.iter().enumerate() {
-            let scaled_length =
-                length(scaled(e.vertices[1].index()) - scaled(e.vertices[0].index()));
-            if scaled_length > 0.0 && scaled_length < FLOAT_RESOLUTION {
+            let [v0, v1] = e.vertices.map(|v| v.index());
+            let scaled_length = length(scaled(v1) - scaled(v0));
+            // Ends apart in the input, however short the scaled difference (it underflows to
+            // zero for an edge of 1e-113 in a model of 1e211).
+            if positions[v0] != positions[v1] && scaled_length < FLOAT_RESOLUTION {
                 report.float_unresolved_edges.push(EdgeId(ei as u32));
             }
             edge_length.push(scaled_length / unit_scale);

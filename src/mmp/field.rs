@@ -108,9 +108,7 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     pub fn vertex_distance(&self, v: VertexId) -> f64 {
         self.vertices[v.index()]
             .as_ref()
-            .map_or(f64::INFINITY, |d| {
-                self.unfolding.to_model(d.distance.to_f64())
-            })
+            .map_or(f64::INFINITY, |d| self.model_f64(&d.distance))
     }
 
     /// The distance of every vertex, in file order (`f64::INFINITY` where unreachable).
@@ -183,6 +181,13 @@ impl<'m, S: Scalar> GeodesicField<'m, S> {
     /// The factor from the engine's scaled units to the model's (a power of two).
     fn model_factor(&self) -> S {
         S::from_f64(self.mesh.unit_scale().recip())
+    }
+
+    /// A length in the engine's scaled units, as the nearest `f64` in the model's units: scaled
+    /// back before it is rounded, as a length below `f64`'s range in scaled units (an edge of
+    /// 1e-113 in a model of 1e211) may be within it in the model's.
+    pub(crate) fn model_f64(&self, x: &S) -> f64 {
+        self.to_model(x).to_f64()
     }
 
     /// A length in the engine's scaled units, in the model's units (exactly).

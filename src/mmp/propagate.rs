@@ -556,12 +556,11 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let Some(at) = self.unfolding.apex_point(mesh, g, side) else {
                 continue;
             };
-            // Only a degenerate face has a corner on its opposite edge's line. Its height
-            // over the line is rounding or a few ulps of the input: the corner is a point of
-            // the edge wherever its foot falls inside the edge (a window as narrow as that
-            // height would be lost to the float backends' resolution, and with it every
-            // geodesic through the corner into the faces beyond).
-            if mesh.is_degenerate_face(f) && self.unfolding.is_over(g, &at) {
+            // A corner on its opposite edge (the middle corner of a degenerate face, as the
+            // number type resolves heights) is a point of the edge: a window as narrow as its
+            // height would be lost to a rounding backend's resolution, and with it every
+            // geodesic through the corner into the faces beyond.
+            if self.unfolding.is_inside(g, &at) {
                 beyond.extend(mesh.edge_faces(g).filter(|&h| h != f));
             }
             let ends = self.unfolding.ends(mesh, g).map(to);
@@ -710,7 +709,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
             (Some(paths), Some(p)) => paths.length(mesh, &p, apex_distance),
             _ => apex_distance(),
         });
-        let apex = S::within(&layout.apex_shadow(&s), &w.b0, &w.b1, &w.reach(length)).then(|| {
+        let shadow = layout.apex_shadow(&s);
+        let reach = || layout.shadow_reach(&s, &shadow);
+        let apex = S::within(&shadow, &w.b0, &w.b1, reach).then(|| {
             let d = S::kept(&at_apex).unwrap_or_else(apex_distance);
             (layout.apex_vertex(), d)
         });

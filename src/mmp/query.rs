@@ -49,9 +49,9 @@ impl<S: Scalar> GeodesicField<'_, S> {
     /// [`PointError`] if the point is not a point of the mesh.
     pub fn distance_at(&self, point: &SurfacePoint) -> Result<f64, PointError> {
         let point = point.validated(self.mesh())?;
-        Ok(self.best_at(&point).map_or(f64::INFINITY, |b| {
-            self.unfolding.to_model(b.distance.to_f64())
-        }))
+        Ok(self
+            .best_at(&point)
+            .map_or(f64::INFINITY, |b| self.model_f64(&b.distance)))
     }
 
     /// [`distance_at`](Self::distance_at) in the backend's own number type (for the exact
@@ -176,7 +176,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 let depth = w.source_y.clone() + &at.y;
                 Some(w.source_x.clone() + (at.x.clone() - &w.source_x) * &w.source_y / depth)
             };
-            if crossing.is_some_and(|c| !S::within(&c, &w.b0, &w.b1, length)) {
+            if crossing.is_some_and(|c| !S::within(&c, &w.b0, &w.b1, || length.clone())) {
                 continue;
             }
             let dx = at.x.clone() - &w.source_x;

@@ -359,7 +359,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         let path = GeodesicPath {
             points,
             simplices: trail.points.clone(),
-            distance: self.unfolding.to_model(distance.to_f64()),
+            distance: self.model_f64(distance),
             source,
         };
         if !path.is_as_long_as_its_distance(TRACE_LENGTH) {
@@ -767,11 +767,17 @@ impl<S: Scalar> GeodesicField<'_, S> {
         if own.contains(&face) {
             return Some(Vec::new());
         }
-        // Only an edge of a degenerate face can hold another face's vertex inside it.
+        // Only an edge of a degenerate face (as the mesh or the number type tells them) can
+        // hold another face's vertex inside it.
         let beside_degenerate = |g: EdgeId| {
-            self.mesh()
-                .edge_faces(g)
-                .any(|h| self.mesh().is_degenerate_face(h))
+            self.mesh().edge_faces(g).any(|h| {
+                self.mesh().is_degenerate_face(h)
+                    || self.mesh().side_of(g, h).is_some_and(|side| {
+                        self.unfolding
+                            .apex_point(self.mesh(), g, side)
+                            .is_some_and(|at| self.unfolding.is_inside(g, &at))
+                    })
+            })
         };
         if !self
             .mesh()
@@ -805,18 +811,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 let Some(on) = self.unfolding.planar(self.mesh(), g, &p) else {
                     continue;
                 };
-                // As in propagation: a corner of a degenerate face is a point of the face's
-                // edge opposite it wherever its foot falls inside that edge.
-                let middle_corner = |v: VertexId| {
-                    self.mesh().edge_faces(g).any(|h| {
-                        self.mesh().is_degenerate_face(h) && self.mesh().face(h).contains(&v)
-                    })
-                };
-                let inside = match point {
-                    SurfacePoint::Vertex(v) if middle_corner(v) => self.unfolding.is_over(g, &on),
-                    _ => self.unfolding.is_inside(g, &on),
-                };
-                if !inside {
+                if !self.unfolding.is_inside(g, &on) {
                     continue;
                 }
                 let here = (self.unfolding.edge_point(g, &on.x), Some(on.x.clone()));

@@ -68,8 +68,9 @@ struct EdgeFrame<S> {
     direction: [S; 3],
     /// `|direction|`.
     norm: S,
-    /// The power of two the edge vector was multiplied by.
-    power: f64,
+    /// The powers of two the edge vector was multiplied by (two where their product leaves
+    /// `f64`'s range).
+    power: [f64; 2],
 }
 
 impl<S: Scalar> EdgeFrame<S> {
@@ -77,13 +78,26 @@ impl<S: Scalar> EdgeFrame<S> {
     fn new(mesh: &TriMesh, v0: VertexId, v1: VertexId) -> Option<Self> {
         let scale = mesh.unit_scale();
         let (p0, p1) = (mesh.position(v0), mesh.position(v1));
-        let largest = (0..3).fold(0.0f64, |m, i| m.max((p1[i] * scale - p0[i] * scale).abs()));
-        if largest == 0.0 {
+        if p0 == p1 {
             return None;
         }
-        let power = normalizing_power(largest);
+        let largest = (0..3).fold(0.0f64, |m, i| m.max((p1[i] * scale - p0[i] * scale).abs()));
+        // An edge whose scaled length is below `f64`'s normal range: only a number type that
+        // measures such edges gets here (the others refuse the mesh), and its factor is taken
+        // in two powers of two, from the edge's length in the model's units; in one, it would
+        // overflow (an edge of 1e-113 in a model of 1e211).
+        let power = if largest >= f64::MIN_POSITIVE {
+            [normalizing_power(largest), 1.0]
+        } else if S::measures_below_float_resolution() {
+            let model = (0..3).fold(0.0f64, |m, i| m.max((p1[i] - p0[i]).abs()));
+            [normalizing_power(model), scale.recip()]
+        } else if largest == 0.0 {
+            return None;
+        } else {
+            [normalizing_power(largest), 1.0]
+        };
         let origin = vertex_point::<S>(mesh, v0);
-        let factor = S::from_f64(power);
+        let factor = S::from_f64(power[0]) * &S::from_f64(power[1]);
         let direction = sub(&vertex_point::<S>(mesh, v1), &origin).map(|c: S| c * &factor);
         let norm = dot(&direction, &direction).sqrt();
         Some(EdgeFrame {
@@ -96,7 +110,9 @@ impl<S: Scalar> EdgeFrame<S> {
 
     /// The edge's length (scaled coordinates).
     fn length(&self) -> S {
-        self.norm.clone() * &S::from_f64(self.power.recip())
+        self.norm.clone()
+            * &S::from_f64(self.power[0].recip())
+            * &S::from_f64(self.power[1].recip())
     }
 
     /// The coordinates of `p` in the frame: `x` along the edge, `y >= 0` its distance from
@@ -358,11 +374,19 @@ impl<S: Scalar> Unfolding<S> {
     }
 
     /// The point at position `x` in the frame of `e`, in space (the model's coordinates),
-    /// placed from the frame's first end: to ulps of `x`, not of the edge's length.
+    /// placed from the nearer end: to ulps of its offset from that end, not of the edge's
+    /// length. (An exact backend's frames keep the mesh's order: a point 1e-4 from the far end
+    /// of an edge 1e8 long, placed from the first end, was 7e-8 off, and its path as much too
+    /// long.)
     pub(crate) fn edge_position(&self, mesh: &TriMesh, e: EdgeId, x: &S) -> DVec3 {
         let [a, b] = self.ends(mesh, e).map(|v| mesh.position(v));
-        let t = (x.clone() / self.length(e)).to_f64().clamp(0.0, 1.0);
-        a + t * (b - a)
+        let length = self.length(e);
+        let t = (x.clone() / length).to_f64().clamp(0.0, 1.0);
+        if t <= 0.5 {
+            return a + t * (b - a);
+        }
+        let u = ((length.clone() - x) / length).to_f64().clamp(0.0, 1.0);
+        b + u * (a - b)
     }
 
     /// The point at position `x` in the frame of `e`, named by its fraction from `vertices[0]`.
@@ -423,15 +447,13 @@ impl<S: Scalar> Unfolding<S> {
         EdgeFrame::new(mesh, v0, v1).map(|frame| frame.planar(p))
     }
 
-    /// Whether a point (in the frame of edge `e`) lies on the edge strictly between its ends.
+    /// Whether a point (in the frame of edge `e`) lies on the edge strictly between its ends,
+    /// on its line as the number type resolves heights ([`Scalar::on_line`]).
     pub(crate) fn is_inside(&self, e: EdgeId, at: &Planar<S>) -> bool {
-        at.y.sign() == Sign::Zero && self.is_over(e, at)
-    }
-
-    /// Whether a point (in the frame of edge `e`) lies strictly between the ends of the edge
-    /// along it, at whatever height: the foot of its perpendicular is inside the edge.
-    pub(crate) fn is_over(&self, e: EdgeId, at: &Planar<S>) -> bool {
-        at.x.sign() == Sign::Positive && at.x.compare(self.length(e)) == Ordering::Less
+        let length = self.length(e);
+        at.x.sign() == Sign::Positive
+            && at.x.compare(length) == Ordering::Less
+            && S::on_line(&at.y, &at.x, length)
     }
 
     /// A surface point's position in space, in scaled coordinates.
@@ -624,6 +646,19 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
     pub(crate) fn apex_shadow(&self, s: &Planar<S>) -> S {
         let depth = s.y.clone() + self.apex_h;
         s.x.clone() + (self.apex_x.clone() - &s.x) * &s.y / depth
+    }
+
+    /// The size of the offsets [`FaceLayout::apex_shadow`] builds the shadow of the apex from
+    /// `s` with, and of the shadow itself: it is known to ulps of these, not of the edge's
+    /// length. Near the frame's first end, where the vertices of short distances lie, that is
+    /// far finer than the edge: on an edge of length 1.41 whose pseudo-source and apex lay
+    /// 1e-16 from that end, a slack of ulps of the edge let the wedge claim the apex 1e-20
+    /// beyond its range, by a straight line shorter than the geodesic round the range's end.
+    pub(crate) fn shadow_reach(&self, s: &Planar<S>, shadow: &S) -> S {
+        let size = |x: &S| S::max_of(x, &-x.clone());
+        [size(&s.x), s.y.clone(), size(self.apex_x)]
+            .iter()
+            .fold(size(shadow), |m, c| S::max_of(&m, c))
     }
 
     /// Squared distance from `s` to the apex.

@@ -91,8 +91,15 @@ impl<S: Scalar> Wedge<S> {
     /// first vertex, whichever is larger. Rays from a pseudo-source many edge lengths away
     /// meet the edge at positions rounded to ulps of that distance, not of the edge.
     pub(crate) fn reach(&self, length: &S) -> S {
+        S::max_of(length, &self.source_reach())
+    }
+
+    /// The pseudo-source's offsets from the edge's first vertex: the scale of the
+    /// constructions that place points of the range near that vertex, where the edge's
+    /// length does not enter them.
+    pub(crate) fn source_reach(&self) -> S {
         let offset = S::max_of(&self.source_x, &-self.source_x.clone());
-        S::max_of(length, &S::max_of(&offset, &self.source_y))
+        S::max_of(&offset, &self.source_y)
     }
 
     /// The smallest distance the wedge gives on its range (its priority [SSK+05 §4]).

@@ -436,12 +436,16 @@ impl<S: Scalar> WedgeLists<S> {
             });
             let (entry, event) = match piece.owner {
                 Owner::New => {
-                    let reach = w.reach(length);
-                    if S::within(&zero, &piece.lo, &piece.hi, &reach) {
+                    // The first vertex is reached at the scale of the offsets near it (a slack
+                    // of ulps of the edge let a wedge claim it 2.6e-16 beyond its range, by a
+                    // straight line shorter than the way round the range's end).
+                    let near =
+                        || S::max_of(&w.source_reach(), &S::max_of(&piece.lo, &-piece.lo.clone()));
+                    if S::within(&zero, &piece.lo, &piece.hi, near) {
                         let d = S::kept(&kept.at_ends[0]).unwrap_or_else(|| mine.at(&zero));
                         arrivals.reach(v0, d, (w, kept));
                     }
-                    if S::within(length, &piece.lo, &piece.hi, &reach) {
+                    if S::within(length, &piece.lo, &piece.hi, || w.reach(length)) {
                         let d = S::kept(&kept.at_ends[1]).unwrap_or_else(|| mine.at(length));
                         arrivals.reach(v1, d, (w, kept));
                     }

@@ -54,6 +54,11 @@ impl Resolution {
     /// [`Resolution::EXTENT`] let wedges claim vertices beyond their ranges on edges 1e8 times
     /// longer than the distances at hand, 3e-6 of a distance short.
     pub const WITHIN: f64 = 64.0 * f64::EPSILON;
+    /// A point lies on an edge's line ([`Scalar::on_line`]) if its height is at most this
+    /// fraction (`2^-46`, as [`Resolution::WITHIN`]) of the edge's length and its square at
+    /// most this fraction of the square of its offset from the nearer end: heights are rounded
+    /// constructions, and the rays through a corner at such a height are rounding too.
+    pub const ON_LINE: f64 = 64.0 * f64::EPSILON;
     /// Two images of one pseudo-source whose positions and sigmas agree to this fraction of
     /// the range's scale (or of their distance from the edge) are one image reached by two
     /// ways ([`Scalar::same_image`]): each way rounds its own chain of unfoldings, a few ulps
@@ -353,9 +358,16 @@ impl Scalar for Adaptive {
     /// the surface) meet with a gap or overlap of a few ulps once rounded; a vertex in such a
     /// gap must still be reached by both.
     #[inline(always)]
-    fn within(x: &Self, lo: &Self, hi: &Self, scale: &Self) -> bool {
-        let slack = Resolution::WITHIN * scale.0;
+    fn within(x: &Self, lo: &Self, hi: &Self, scale: impl FnOnce() -> Self) -> bool {
+        let slack = Resolution::WITHIN * scale().0;
         x.0 >= lo.0 - slack && x.0 <= hi.0 + slack
+    }
+
+    /// At the resolution of constructed heights ([`Resolution::ON_LINE`]).
+    #[inline(always)]
+    fn on_line(height: &Self, x: &Self, length: &Self) -> bool {
+        let (h, offset) = (height.0, x.0.min(length.0 - x.0));
+        h <= Resolution::ON_LINE * length.0 && h * h <= Resolution::ON_LINE * offset * offset
     }
 
     /// `A = B = C = 0` holds exactly when the two functions have equal `x`, `|y|` and `sigma`,

@@ -181,8 +181,20 @@ pub trait Scalar: Field {
     /// Whether `[lo, hi]` on an edge of length `scale` is long enough to be a wedge of its own.
     fn has_extent(lo: &Self, hi: &Self, scale: &Self) -> bool;
 
-    /// Whether `x` lies in `[lo, hi]` on an edge of length `scale` (closed range).
-    fn within(x: &Self, lo: &Self, hi: &Self, scale: &Self) -> bool;
+    /// Whether `x` lies in `[lo, hi]` (closed range), where `scale` gives the size of the
+    /// offsets `x` and the range's ends are constructed from (an edge's length at most); only
+    /// a number type that rounds those constructions evaluates it.
+    fn within(x: &Self, lo: &Self, hi: &Self, scale: impl FnOnce() -> Self) -> bool;
+
+    /// Whether the point `(x, height)` in the frame of an edge of length `length`, its foot
+    /// inside the edge (`0 < x < length`, `height >= 0`), lies on the edge's line: the middle
+    /// corner of a degenerate face is then a point of its opposite edge [MMP87]. Exactly
+    /// `height = 0` for number types whose constructions are exact. One that rounds them
+    /// cannot tell a height at its resolution from zero (the rays through such a corner turn by
+    /// that height over their length); taking the point onto the line moves the distances
+    /// through it into the faces beyond by at most its height, and those to the edge's ends by
+    /// about its square over twice the point's offset from the nearer end.
+    fn on_line(height: &Self, x: &Self, length: &Self) -> bool;
 
     /// Whether two wedges have the same distance function on a range of length about `scale`:
     /// the case `A = B = C = 0` of eq. (2) with infinitely many solutions (Example 1 [LZT §3]).

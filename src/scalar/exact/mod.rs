@@ -546,8 +546,12 @@ impl Scalar for Real {
         hi.compare(lo) == Ordering::Greater
     }
 
-    fn within(x: &Self, lo: &Self, hi: &Self, _scale: &Self) -> bool {
+    fn within(x: &Self, lo: &Self, hi: &Self, _scale: impl FnOnce() -> Self) -> bool {
         x.compare(lo) != Ordering::Less && x.compare(hi) != Ordering::Greater
+    }
+
+    fn on_line(height: &Self, _x: &Self, _length: &Self) -> bool {
+        height.sign() == Sign::Zero
     }
 
     fn same_distance_function(
