@@ -189,18 +189,32 @@ def test_backends_agree(icosphere):
         np.testing.assert_allclose(field.distances, reference, rtol=1e-9)
 
 
+def checkerboard_terrain():
+    """2 x 2 unit squares, the corners of one colour raised by 1/2 (rows of vertices, each
+    square split by its diagonal from its first corner)."""
+    vertices = np.array(
+        [[i, j, 0.5 * ((i + j) % 2)] for j in range(3) for i in range(3)], dtype=np.float64
+    )
+    triangles = []
+    for j in range(2):
+        for i in range(2):
+            a = 3 * j + i
+            triangles += [[a, a + 1, a + 4], [a, a + 4, a + 3]]
+    return vertices, np.array(triangles)
+
+
 def test_exact_backend_reports_whether_it_certified_every_decision():
-    # A flat grid is certified throughout; an icosphere's exact mirror symmetries are not yet
-    # (README, Backends): a few decisions reach the precision cap.
+    # A flat grid is certified throughout; the zeros of a regular terrain with saddles are not
+    # yet (README, Backends): a few decisions reach the precision cap.
     vertices, triangles = eg.generate_mesh("grid:4,4")
     certified = eg.GeodesicSolver(vertices, triangles, backend="exact").propagate(0)
     assert certified.is_certified
     assert certified.stats()["backend"]["uncertified"] == 0
     assert certified.stats()["backend"]["decisions"] > 0
 
-    vertices, triangles = eg.generate_mesh("icosphere:1")
+    vertices, triangles = checkerboard_terrain()
     solver = eg.GeodesicSolver(vertices, triangles, backend="exact", precision_cap=256)
-    field = solver.propagate(0)
+    field = solver.propagate(2)
     assert not field.is_certified
     assert field.stats()["backend"]["uncertified"] > 0
     # The float backends certify nothing, and claim nothing uncertified.
