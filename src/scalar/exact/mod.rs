@@ -764,6 +764,19 @@ mod tests {
         assert_eq!((b - near).certified_sign().1, Certificate::Refinement);
     }
 
+    /// An identity off by 2^-9000, below what refinement within the cap can see, is not called
+    /// zero.
+    fn assert_not_zero_when_off_by_2_pow_minus_9000(identity: Real) {
+        let tiny = Real::from_rational(
+            Rational::new(Integer::from(1), Integer::from(2).pow(9000)).unwrap(),
+        );
+        let (_, certificate) = (identity + &tiny).certified_sign();
+        assert!(
+            matches!(certificate, Certificate::Uncertified(_)),
+            "{certificate:?}"
+        );
+    }
+
     fn normal_form_zero() -> (Sign, Certificate) {
         (
             Sign::Zero,
@@ -822,15 +835,7 @@ mod tests {
         let identity =
             sum.clone() * &sum - &(deep.clone() * &deep) - &(int(2) * &r2 * &deep) - &int(2);
         assert_eq!(identity.certified_sign(), normal_form_zero());
-        // Off by 2^-9000, below what refinement within the cap can see: not called zero.
-        let tiny = Real::from_rational(
-            Rational::new(Integer::from(1), Integer::from(2).pow(9000)).unwrap(),
-        );
-        let (_, certificate) = (identity + &tiny).certified_sign();
-        assert!(
-            matches!(certificate, Certificate::Uncertified(_)),
-            "{certificate:?}"
-        );
+        assert_not_zero_when_off_by_2_pow_minus_9000(identity);
     }
 
     #[test]
@@ -904,15 +909,7 @@ mod tests {
         let joint = (a.clone() + &b + &(int(2) * &(a.clone() * &b).sqrt())).sqrt();
         let identity = a.sqrt() + &b.sqrt() - &joint;
         assert_eq!(identity.certified_sign(), normal_form_zero());
-        // Off by 2^-9000, below what refinement within the cap can see: not called zero.
-        let tiny = Real::from_rational(
-            Rational::new(Integer::from(1), Integer::from(2).pow(9000)).unwrap(),
-        );
-        let (_, certificate) = (identity + &tiny).certified_sign();
-        assert!(
-            matches!(certificate, Certificate::Uncertified(_)),
-            "{certificate:?}"
-        );
+        assert_not_zero_when_off_by_2_pow_minus_9000(identity);
     }
 
     #[test]
