@@ -17,6 +17,7 @@ mod query;
 mod source;
 mod stats;
 mod stop;
+mod strips;
 mod trace_back;
 mod trace_loop;
 mod unfold;

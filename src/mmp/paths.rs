@@ -148,7 +148,7 @@ impl<S: Scalar> CongruentPaths<S> {
     }
 
     /// The descriptions of the path's segments, sorted and joined.
-    fn key(&self, mesh: &TriMesh, path: &Path) -> Option<Vec<u32>> {
+    pub(crate) fn key(&self, mesh: &TriMesh, path: &Path) -> Option<Vec<u32>> {
         let steps = path.steps();
         let mut segments = Vec::new();
         let mut start = 0;
@@ -168,7 +168,7 @@ impl<S: Scalar> CongruentPaths<S> {
     }
 
     /// The class of the edge between two vertices.
-    fn class(&self, mesh: &TriMesh, a: VertexId, b: VertexId) -> Option<u32> {
+    pub(crate) fn class(&self, mesh: &TriMesh, a: VertexId, b: VertexId) -> Option<u32> {
         Some(self.classes[mesh.edge_between(a, b)?.index()])
     }
 

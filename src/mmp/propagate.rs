@@ -13,6 +13,7 @@ use super::provenance::{keeps_values, Anchor, Provenance};
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::stop::StopPoints;
+use super::strips::{OfferedWedges, Strip, Through};
 use super::unfold::{FaceLayout, Unfolding};
 use super::vertex_field::propagate_vertices;
 use super::wedge::{PseudoSource, Wedge};
@@ -230,6 +231,7 @@ type SourceKept<S> = (
     Option<[<S as Scalar>::Kept<S>; 2]>,
     Option<RegionImage<S>>,
     <S as Scalar>::Kept<Path>,
+    Option<Strip>,
 );
 
 /// A wedge about to be born on an edge: the edge, the ends of its range (unsorted), its
@@ -248,6 +250,8 @@ struct Engine<'m, S: Scalar> {
     /// One expression per vertex distance of congruent paths, where the run proves ties by
     /// congruence (see `paths.rs`).
     paths: Option<CongruentPaths<S>>,
+    /// The wedges offered through each strip, where the run keeps paths (see `strips.rs`).
+    offered: Option<OfferedWedges>,
     stats: Stats,
 }
 
@@ -287,11 +291,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let paths = keeps_values::<S>()
             .then(|| CongruentPaths::new(mesh, &sources))
             .flatten();
+        let offered = paths.as_ref().map(|_| OfferedWedges::default());
         Engine {
             mesh,
             unfolding,
             sources,
             paths,
+            offered,
             wedges: WedgeLists::new(
                 mesh.edge_count(),
                 options.record_decisions,
@@ -382,6 +388,20 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// Inserts a wedge on its edge, intersecting it with the wedges there.
     fn insert(&mut self, w: Wedge<S>, kept: Provenance<S>) {
         let e = w.edge;
+        if let (Some(offered), Some(strip)) = (self.offered.as_mut(), S::kept(&kept.strip)) {
+            let p = match w.pseudo_source {
+                PseudoSource::Vertex(v) => Some(v),
+                PseudoSource::Source(k) => match self.sources[k.index()] {
+                    SurfacePoint::Vertex(v) => Some(v),
+                    _ => None,
+                },
+            };
+            let first = self.unfolding.ends(self.mesh, e)[0];
+            if p.is_some_and(|p| offered.offered_before(&strip, (w.source, p), (e, first))) {
+                self.stats.wedges_offered_again += 1;
+                return;
+            }
+        }
         let edge = (self.unfolding.length(e), self.unfolding.ends(self.mesh, e));
         let mut reach = Reach {
             mesh: self.mesh,
@@ -389,8 +409,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
             sources: &self.sources,
             front: &mut self.front,
         };
-        self.wedges
-            .insert((w, kept), edge, &mut self.stats, &mut reach);
+        let run = (&mut reach, self.offered.as_mut());
+        self.wedges.insert((w, kept), edge, &mut self.stats, run);
     }
 
     /// Lowers a vertex's distance if `distance` (the length of `path`, if kept) is better
@@ -435,7 +455,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     Side::FIRST,
                     S::zero(),
                     (source, k),
-                    (None, None, Default::default()),
+                    (None, None, Default::default(), None),
                 );
                 let p = self.unfolding.position(self.mesh, point);
                 let faces: Vec<FaceId> = self.mesh.edge_faces(edge).collect();
@@ -493,7 +513,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                         }
                     }
                 }
-                let kept = (None, None, Default::default());
+                let kept = (None, None, Default::default(), None);
                 self.add_wedge(g, at, side, sigma.clone(), (source, k), kept);
             }
         }
@@ -573,7 +593,16 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     point: regions.corner(region, v).clone(),
                 });
             let across = continued::<S>(&path, |p| p.across(f));
-            let kept = (Some(ends), image, across);
+            let strip = match (&self.paths, self.offered.as_mut(), S::kept(&path)) {
+                (Some(paths), Some(offered), Some(path)) => offered.first(
+                    paths,
+                    mesh,
+                    (v, &path),
+                    (f, self.unfolding.ends(mesh, g)[0]),
+                ),
+                _ => None,
+            };
+            let kept = (Some(ends), image, across, strip);
             self.add_wedge(g, at, side, sigma.clone(), (source, k), kept);
         }
         for &g in mesh.vertex_edges(v) {
@@ -591,7 +620,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 Side::FIRST,
                 sigma.clone(),
                 (source, k),
-                (Some(ends), None, along),
+                (Some(ends), None, along, None),
             );
         }
         if !beyond.is_empty() {
@@ -610,7 +639,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         tau: Side,
         sigma: S,
         (source, k): (PseudoSource, SourceId),
-        (at_ends, image, path): SourceKept<S>,
+        (at_ends, image, path, strip): SourceKept<S>,
     ) {
         let wedge = Wedge {
             edge: g,
@@ -629,7 +658,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
         });
         let kept = Provenance::new(at_ends, [None, None])
             .with_image(image)
-            .with_path(path);
+            .with_path(path)
+            .with_strip(strip);
         self.insert(wedge, kept);
     }
 
@@ -782,6 +812,20 @@ impl<'m, S: Scalar> Engine<'m, S> {
             }
             _ => (to(&s), None),
         };
+        // The strip continued across the face to a child's edge. It fixes a child's range end
+        // that is a vertex (the apex, or an end of this wedge's edge) or the ray through an end
+        // it fixes.
+        let strip = S::kept(&kept.strip);
+        let (paths, offered) = (&self.paths, &mut self.offered);
+        let mut strip_to =
+            |g: EdgeId, through: [Through; 2]| match (paths, offered.as_mut(), &strip) {
+                (Some(paths), Some(offered), Some(strip)) => {
+                    offered.across(paths, mesh, strip, (face, g), through)
+                }
+                _ => None,
+            };
+        let [first, second] = self.unfolding.ends(mesh, w.edge);
+        let apex_corner = Through::Corner(layout.apex_vertex());
         let mut children: [Option<Child<S>>; 2] = [None, None];
         // An edge of length zero (coincident corners) carries no wedge; its face passes rays
         // on to its other edge unchanged.
@@ -806,9 +850,22 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 [kept.at_ends[0].clone(), at_apex.clone()]
             };
             let (at, image) = source_on(near, &to_near);
+            let through = [
+                if at_v0 {
+                    Through::Corner(first)
+                } else {
+                    Through::Ray(0)
+                },
+                if side1 != Ordering::Less {
+                    apex_corner
+                } else {
+                    Through::Ray(1)
+                },
+            ];
             let kept = Provenance::new(ends, [a0, a1])
                 .with_image(image)
-                .with_path(path.clone());
+                .with_path(path.clone())
+                .with_strip(strip_to(near, through));
             children[0] = Some((near, positions, at, kept));
         }
         if side1 == Ordering::Greater && !self.unfolding.is_zero_length(far) {
@@ -832,9 +889,22 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 [at_apex.clone(), kept.at_ends[1].clone()]
             };
             let (at, image) = source_on(far, &to_far);
+            let through = [
+                if side0 != Ordering::Greater {
+                    apex_corner
+                } else {
+                    Through::Ray(0)
+                },
+                if at_v1 {
+                    Through::Corner(second)
+                } else {
+                    Through::Ray(1)
+                },
+            ];
             let kept = Provenance::new(ends, [a0, a1])
                 .with_image(image)
-                .with_path(path.clone());
+                .with_path(path.clone())
+                .with_strip(strip_to(far, through));
             children[1] = Some((far, positions, at, kept));
         }
         if let Some((v, d)) = apex {
@@ -843,6 +913,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
         for (g, [p0, p1], at, mut kept) in children.into_iter().flatten() {
             let (b0, b1) = if p0.compare(&p1) == Ordering::Greater {
                 kept.anchors.swap(0, 1);
+                let strip = S::kept(&kept.strip).map(Strip::swapped);
+                kept = kept.with_strip(strip);
                 (p1, p0)
             } else {
                 (p0, p1)

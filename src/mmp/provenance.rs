@@ -15,6 +15,7 @@
 use super::flat_region::RegionImage;
 use super::paths::Path;
 use super::planar::Planar;
+use super::strips::Strip;
 use crate::scalar::{Scalar, SourceDistance};
 
 /// A vertex on the ray through a wedge's range end from the wedge's pseudo-source: the end lies
@@ -59,6 +60,9 @@ pub(crate) struct Provenance<S: Scalar> {
     /// The path the wedge continues, up to the face it came across (or the edge it lies
     /// along), where the run proves ties by symmetry (see `paths.rs`).
     pub(crate) path: S::Kept<Path>,
+    /// The strip the wedge is seen through, where the run knows wedges offered again (see
+    /// `strips.rs`).
+    pub(crate) strip: S::Kept<Strip>,
 }
 
 impl<S: Scalar> Default for Provenance<S> {
@@ -69,6 +73,7 @@ impl<S: Scalar> Default for Provenance<S> {
             crossings: Default::default(),
             image: Default::default(),
             path: Default::default(),
+            strip: Default::default(),
         }
     }
 }
@@ -82,6 +87,7 @@ impl<S: Scalar> Provenance<S> {
             crossings: Default::default(),
             image: Default::default(),
             path: Default::default(),
+            strip: Default::default(),
         }
     }
 
@@ -94,6 +100,12 @@ impl<S: Scalar> Provenance<S> {
     /// The same provenance with the path the wedge continues.
     pub(crate) fn with_path(mut self, path: S::Kept<Path>) -> Self {
         self.path = path;
+        self
+    }
+
+    /// The same provenance with the strip the wedge is seen through.
+    pub(crate) fn with_strip(mut self, strip: Option<Strip>) -> Self {
+        self.strip = strip.map_or_else(Default::default, |s| S::keep(|| s));
         self
     }
 
@@ -131,6 +143,9 @@ impl<S: Scalar> Provenance<S> {
             crossings: kept_ends(&self.crossings, keep),
             image: self.image.clone(),
             path: self.path.clone(),
+            // A trimmed end is a crossing or another wedge's end: the strip does not fix it.
+            strip: S::kept(&self.strip)
+                .map_or_else(Default::default, |strip| S::keep(|| strip.trimmed(keep))),
         }
     }
 
@@ -174,6 +189,8 @@ impl<S: Scalar> Provenance<S> {
             crossings: [crossing_0, crossing_1],
             image,
             path,
+            // The joined range's ends come from two strips.
+            strip: Default::default(),
         }
     }
 }

@@ -43,6 +43,9 @@ pub struct Stats {
     /// image of the same pseudo-source, with ranges that meet (in an exactly flat region, on
     /// the shadow line of a vertex).
     pub wedges_joined: u64,
+    /// Wedges dropped because their edge was offered the same wedge before, through a strip of
+    /// the same shape from the same pseudo-source (exact backend, see `mmp/strips.rs`).
+    pub wedges_offered_again: u64,
     /// Times a vertex emitted wedges as a pseudo-source.
     pub pseudo_source_emissions: u64,
     /// Cases of eq. (2) met in wedge intersections.

@@ -9,6 +9,7 @@ use super::edge_wedges::EdgeWedges;
 use super::intersect::{cut_into_pieces, Owner, Piece};
 use super::provenance::{keeps_values, Provenance};
 use super::stats::Stats;
+use super::strips::OfferedWedges;
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{EdgeId, Side, SourceId, VertexId};
 use crate::scalar::{Scalar, Site, SourceDistance};
@@ -339,7 +340,7 @@ impl<S: Scalar> WedgeLists<S> {
         (w, kept): (Wedge<S>, Provenance<S>),
         (length, ends): (&S, [VertexId; 2]),
         stats: &mut Stats,
-        arrivals: &mut impl Arrivals<S>,
+        (arrivals, strips): (&mut impl Arrivals<S>, Option<&mut OfferedWedges>),
     ) {
         let e = w.edge;
         S::locate(Site {
@@ -370,7 +371,8 @@ impl<S: Scalar> WedgeLists<S> {
         cut_into_pieces(&mut stats.eq2, log, &mut pieces, overlapping, new, length);
         if pieces.iter().any(|p| p.owner == Owner::New) {
             let edge = (length, ends);
-            self.rebuild((&w, &kept), first..end, &mut pieces, edge, stats, arrivals);
+            let run = (stats, arrivals, strips);
+            self.rebuild((&w, &kept), first..end, &mut pieces, edge, run);
         }
         self.scratch.pieces = pieces;
     }
@@ -390,8 +392,11 @@ impl<S: Scalar> WedgeLists<S> {
         Range { start: first, end }: Range<usize>,
         pieces: &mut Vec<Piece<S>>,
         (length, [v0, v1]): (&S, [VertexId; 2]),
-        stats: &mut Stats,
-        arrivals: &mut impl Arrivals<S>,
+        (stats, arrivals, mut strips): (
+            &mut Stats,
+            &mut impl Arrivals<S>,
+            Option<&mut OfferedWedges>,
+        ),
     ) {
         let e = w.edge;
         let list = &mut self.lists[e.index()];
@@ -415,8 +420,11 @@ impl<S: Scalar> WedgeLists<S> {
         let zero = S::zero();
         let mine = w.distance_function();
         let keeps_values = keeps_values::<S>();
-        // Which range ends of a wedge a piece keeps (asked only where anchors depend on it).
-        let anchored = |k: &Provenance<S>| k.anchor(0).is_some() || k.anchor(1).is_some();
+        // Which range ends of a wedge a piece keeps (asked only where anchors or a strip
+        // depend on it).
+        let anchored = |k: &Provenance<S>| {
+            k.anchor(0).is_some() || k.anchor(1).is_some() || S::kept(&k.strip).is_some()
+        };
         let keeps = |[b0, b1]: [&S; 2], lo: &S, hi: &S| {
             [
                 b0.compare(lo) == Ordering::Equal,
@@ -434,6 +442,25 @@ impl<S: Scalar> WedgeLists<S> {
                     Owner::Old(k) => Some(list[first + k as usize].wedge(e).distance_function()),
                 })?
             });
+            // The strips of the wedges whose crossings are the piece's ends.
+            let partners = piece.cut.map(|other| match other? {
+                Owner::New => S::kept(&kept.strip),
+                Owner::Old(k) => S::kept(&list[first + k as usize].kept.strip),
+            });
+            let mut named_crossings = |piece_kept: Provenance<S>| match (
+                strips.as_deref_mut(),
+                S::kept(&piece_kept.strip),
+            ) {
+                (Some(strips), Some(mut strip)) => {
+                    for (i, partner) in partners.iter().enumerate() {
+                        if let Some(partner) = partner {
+                            strip = strips.crossed(&strip, i, partner, v0);
+                        }
+                    }
+                    piece_kept.with_strip(Some(strip))
+                }
+                _ => piece_kept,
+            };
             let (entry, event) = match piece.owner {
                 Owner::New => {
                     // The first vertex is reached at the scale of the offsets near it (a slack
@@ -455,6 +482,7 @@ impl<S: Scalar> WedgeLists<S> {
                         kept.clone()
                     }
                     .with_crossings(crossed);
+                    let piece_kept = named_crossings(piece_kept);
                     let mut wedge = w.clone();
                     wedge.b0 = piece.lo;
                     wedge.b1 = piece.hi;
@@ -466,7 +494,8 @@ impl<S: Scalar> WedgeLists<S> {
                     let mut entry = list[first + k].clone();
                     let kept_ends = keeps([&entry.b0, &entry.b1], &piece.lo, &piece.hi);
                     if kept_ends != [true, true] {
-                        entry.kept = entry.kept.trimmed(kept_ends).with_crossings(crossed);
+                        entry.kept =
+                            named_crossings(entry.kept.trimmed(kept_ends).with_crossings(crossed));
                         entry.b0 = piece.lo;
                         entry.b1 = piece.hi;
                     }
@@ -597,7 +626,7 @@ mod tests {
         let (mut stats, mut events) = (Stats::default(), Events::default());
         let edge = (&1.0, [VertexId(0), VertexId(1)]);
         let mut insert = |lists: &mut WedgeLists<f64>, w: Wedge<f64>, events: &mut Events| {
-            lists.insert((w, Provenance::default()), edge, &mut stats, events);
+            lists.insert((w, Provenance::default()), edge, &mut stats, (events, None));
         };
         insert(&mut lists, wedge([0.4, 0.6], 0.5, 0.0), &mut events);
         insert(&mut lists, wedge([0.6, 1.0], 0.8, 0.5), &mut events);
