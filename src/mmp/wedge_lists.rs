@@ -542,8 +542,10 @@ impl<S: Scalar> WedgeLists<S> {
         } else {
             let needed = list.len() + joined.len() - (stop - start);
             if needed > list.capacity() {
-                // A run's memory is mostly these lists: they grow by a quarter, not double.
-                list.reserve_exact(needed + needed / 4 - list.len());
+                // A run's memory is mostly these lists: they grow by a quarter, not double, and
+                // by three wedges at least, so that short lists are not moved at every wedge.
+                let grown = (needed + needed / 4).max(needed + 3);
+                list.reserve_exact(grown - list.len());
             }
             list.splice(start..stop, joined.drain(..));
         }
