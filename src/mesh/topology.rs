@@ -8,7 +8,7 @@ use super::validation::{DuplicateFace, NonManifoldEdge};
 use super::vector::{angle, length, normalizing_power, unit, TWO_TO_64};
 use super::{EdgeId, FaceId, ValidationReport, VertexId};
 use glam::DVec3;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 /// An undirected edge: its two end vertices (`vertices[0] < vertices[1]`) and its first two
 /// faces.
@@ -217,10 +217,12 @@ impl Topology {
     pub(super) fn build(positions: &[DVec3], faces: &[[u32; 3]]) -> (Topology, ValidationReport) {
         let nv = positions.len();
         let mut report = ValidationReport::default();
-        let mut edge_of: HashMap<(u32, u32), u32> = HashMap::with_capacity(faces.len() * 2);
+        let mut edge_of: FxHashMap<(u32, u32), u32> =
+            FxHashMap::with_capacity_and_hasher(faces.len() * 2, Default::default());
         let mut edges: Vec<Edge> = Vec::with_capacity(faces.len() * 3 / 2 + 3);
         let mut extra: Vec<(usize, FaceId)> = Vec::new();
-        let mut first_with_corners: HashMap<[u32; 3], u32> = HashMap::with_capacity(faces.len());
+        let mut first_with_corners: FxHashMap<[u32; 3], u32> =
+            FxHashMap::with_capacity_and_hasher(faces.len(), Default::default());
         let mut is_copy = vec![false; faces.len()];
         let mut face_edges = Vec::with_capacity(faces.len());
         let mut forward: Vec<[bool; 2]> = Vec::with_capacity(edges.capacity());

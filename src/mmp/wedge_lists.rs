@@ -82,13 +82,13 @@ impl<S: Scalar> Entry<S> {
             && !S::has_extent(&self.b1, &next.b0, length)
     }
 
-    /// This wedge extended over `next`, which continues it ([`Entry::continued_by`]): the range
-    /// runs on to `next`'s end, with what `next` keeps of that end. The distance function is
-    /// this wedge's (the backend found the two the same), and so are the serial and the queue
-    /// state (the caller joins only wedges in the same state).
-    fn join(&mut self, next: Entry<S>) {
-        self.b1 = next.b1;
-        self.kept = std::mem::take(&mut self.kept).joined(next.kept);
+    /// This wedge extended over `next`, which continues it ([`Entry::continued_by`]) and which
+    /// the caller then drops: the range runs on to `next`'s end, with what `next` keeps of that
+    /// end. The distance function is this wedge's (the backend found the two the same), and so
+    /// are the serial and the queue state (the caller joins only wedges in the same state).
+    fn join(&mut self, next: &mut Entry<S>) {
+        self.b1 = next.b1.clone();
+        self.kept = std::mem::take(&mut self.kept).joined(std::mem::take(&mut next.kept));
     }
 
     /// The largest distance the wedge gives on its range, in `f64` (at an end: the distance
@@ -126,14 +126,8 @@ struct Scratch<S: Scalar> {
     overlapped: Vec<Wedge<S>>,
     /// Whether a piece of each overlapped wedge took its serial (and so its queue event).
     named: Vec<bool>,
-    /// The rebuilt stretch of the list.
-    fresh: Vec<Entry<S>>,
-    /// Whether each entry of `fresh` needs a queue event.
-    events: Vec<bool>,
-    /// The rebuilt stretch, adjacent wedges of one image joined.
-    joined: Vec<Entry<S>>,
-    /// Whether each entry of `joined` needs a queue event.
-    joined_events: Vec<bool>,
+    /// The rebuilt stretch of the list, each entry with whether it needs a queue event.
+    fresh: Vec<(Entry<S>, bool)>,
 }
 
 impl<S: Scalar> Default for Scratch<S> {
@@ -143,9 +137,6 @@ impl<S: Scalar> Default for Scratch<S> {
             overlapped: Vec::new(),
             named: Vec::new(),
             fresh: Vec::new(),
-            events: Vec::new(),
-            joined: Vec::new(),
-            joined_events: Vec::new(),
         }
     }
 }
@@ -266,15 +257,15 @@ impl<S: Scalar> WedgeLists<S> {
         entry.queued = false;
         let kept = entry.kept.clone();
         if i > 0 && !list[i - 1].queued && list[i - 1].continued_by(&list[i], length) {
-            let next = list.remove(i);
+            let mut next = list.remove(i);
             i -= 1;
-            list[i].join(next);
+            list[i].join(&mut next);
             self.entries -= 1;
             stats.wedges_joined += 1;
         }
         if i + 1 < list.len() && !list[i + 1].queued && list[i].continued_by(&list[i + 1], length) {
-            let next = list.remove(i + 1);
-            list[i].join(next);
+            let mut next = list.remove(i + 1);
+            list[i].join(&mut next);
             self.entries -= 1;
             stats.wedges_joined += 1;
         }
@@ -406,17 +397,10 @@ impl<S: Scalar> WedgeLists<S> {
             *serial = s.wrapping_add(1);
             s
         };
-        let Scratch {
-            named,
-            fresh,
-            events,
-            joined,
-            joined_events,
-            ..
-        } = &mut self.scratch;
+        let Scratch { named, fresh, .. } = &mut self.scratch;
         named.clear();
         named.resize(end - first, false);
-        events.clear();
+        fresh.clear();
         let zero = S::zero();
         let mine = w.distance_function();
         let keeps_values = keeps_values::<S>();
@@ -509,52 +493,47 @@ impl<S: Scalar> WedgeLists<S> {
                     (entry, event)
                 }
             };
-            fresh.push(entry);
-            events.push(event);
+            fresh.push((entry, event));
         }
         // Join waiting wedges that continue one another, among the pieces and with the
         // waiting wedges just before and after them.
         let joins = |a: &Entry<S>, b: &Entry<S>| a.queued && b.queued && a.continued_by(b, length);
         let mut start = first;
-        if first > 0 && fresh.first().is_some_and(|x| joins(&list[first - 1], x)) {
-            fresh.insert(0, list[first - 1].clone());
-            events.insert(0, false);
+        if first > 0
+            && fresh
+                .first()
+                .is_some_and(|(x, _)| joins(&list[first - 1], x))
+        {
+            fresh.insert(0, (list[first - 1].clone(), false));
             start -= 1;
         }
         let mut stop = end;
-        if end < list.len() && fresh.last().is_some_and(|x| joins(x, &list[end])) {
-            fresh.push(list[end].clone());
-            events.push(false);
+        if end < list.len() && fresh.last().is_some_and(|(x, _)| joins(x, &list[end])) {
+            fresh.push((list[end].clone(), false));
             stop += 1;
         }
-        joined.clear();
-        joined_events.clear();
-        for (entry, event) in fresh.drain(..).zip(events.drain(..)) {
-            if let Some(last) = joined.last_mut() {
-                if joins(last, &entry) {
-                    last.join(entry);
-                    *joined_events.last_mut().expect("one per entry") = true;
-                    stats.wedges_joined += 1;
-                    continue;
-                }
+        // In place: each entry is joined to the last one kept if it continues it.
+        fresh.dedup_by(|(entry, _), (last, event)| {
+            let joined = joins(last, entry);
+            if joined {
+                last.join(entry);
+                *event = true;
+                stats.wedges_joined += 1;
             }
-            joined.push(entry);
-            joined_events.push(event);
-        }
+            joined
+        });
         // A neighbour taken in but not joined to the chain (which keeps its first wedge's
         // function) needs no event, and stays as it was.
-        if start < first && !joined_events[0] {
-            joined.remove(0);
-            joined_events.remove(0);
+        if start < first && !fresh[0].1 {
+            fresh.remove(0);
             start += 1;
         }
-        if stop > end && !joined_events.last().expect("a neighbour") {
-            joined.pop();
-            joined_events.pop();
+        if stop > end && !fresh.last().expect("a neighbour").1 {
+            fresh.pop();
             stop -= 1;
         }
-        for (i, (entry, &event)) in joined.iter().zip(joined_events.iter()).enumerate() {
-            if event {
+        for (i, (entry, event)) in fresh.iter().enumerate() {
+            if *event {
                 let at = WedgeRef {
                     edge: e,
                     serial: entry.serial,
@@ -563,18 +542,20 @@ impl<S: Scalar> WedgeLists<S> {
                 arrivals.queue(at, &entry.wedge(e));
             }
         }
-        self.entries = self.entries + joined.len() - (stop - start);
-        if joined.len() == stop - start {
-            for (old, new) in list[start..stop].iter_mut().zip(joined.drain(..)) {
+        self.entries = self.entries + fresh.len() - (stop - start);
+        if fresh.len() == stop - start {
+            for (old, (new, _)) in list[start..stop].iter_mut().zip(fresh.drain(..)) {
                 *old = new;
             }
         } else {
-            let needed = list.len() + joined.len() - (stop - start);
+            let needed = list.len() + fresh.len() - (stop - start);
             if needed > list.capacity() {
-                // A run's memory is mostly these lists: they grow by a quarter, not double.
-                list.reserve_exact(needed + needed / 4 - list.len());
+                // A run's memory is mostly these lists: they grow by a quarter, not double, and
+                // by three wedges at least, so that short lists are not moved at every wedge.
+                let grown = (needed + needed / 4).max(needed + 3);
+                list.reserve_exact(grown - list.len());
             }
-            list.splice(start..stop, joined.drain(..));
+            list.splice(start..stop, fresh.drain(..).map(|(entry, _)| entry));
         }
         let bytes = self.entries * std::mem::size_of::<Entry<S>>()
             + self.lists.len()
