@@ -641,6 +641,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         (source, k): (PseudoSource, SourceId),
         (at_ends, image, path, strip): SourceKept<S>,
     ) {
+        let at = self.image_on(g, at, strip);
         let wedge = Wedge {
             edge: g,
             b0: S::zero(),
@@ -920,6 +921,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 (p0, p1)
             };
             let tau = mesh.side_of(g, face).expect("edge of the face");
+            let at = self.image_on(g, at, S::kept(&kept.strip));
             let child = Wedge {
                 edge: g,
                 b0,
@@ -936,6 +938,19 @@ impl<'m, S: Scalar> Engine<'m, S> {
             } else {
                 self.insert(child, kept);
             }
+        }
+    }
+
+    /// The pseudo-source's image `at` on edge `g` as its strip places it: on the edge's
+    /// perpendicular bisector, at half the edge's length, where the strip is its own mirror
+    /// image (see `strips.rs`), so that every wedge there has that one value.
+    fn image_on(&self, g: EdgeId, at: Planar<S>, strip: Option<Strip>) -> Planar<S> {
+        match strip {
+            Some(strip) if strip.is_symmetric() => Planar {
+                x: self.unfolding.length(g).clone() * S::from_f64(0.5),
+                y: at.y,
+            },
+            _ => at,
         }
     }
 

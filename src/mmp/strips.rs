@@ -48,6 +48,22 @@ impl Strip {
         self
     }
 
+    /// Whether the strip is its own mirror image across the perpendicular bisector of its
+    /// edge (read from either end of the edge, one shape): its image lies on the bisector.
+    pub(crate) fn is_symmetric(&self) -> bool {
+        self.ids[0] == self.ids[1]
+    }
+
+    /// Whether `other` is this strip's mirror image across the perpendicular bisector of the
+    /// edge (each, read from one end, is the other read from the other end): two distance
+    /// functions `sigma + |s - t|` with mirrored images and one `sigma` cross at the edge's
+    /// midpoint only.
+    pub(crate) fn reflects(&self, other: &Strip) -> bool {
+        !self.is_symmetric()
+            && (0..2)
+                .all(|r| (0..2).any(|q| other.a[q] == self.a[r] && other.ids[q] == self.ids[1 - r]))
+    }
+
     /// The same strip with its range ends swapped (the wedge laid out the other way).
     pub(crate) fn swapped(mut self) -> Strip {
         self.ends.swap(0, 1);

@@ -415,10 +415,8 @@ impl<S: Scalar> WedgeLists<S> {
                 b1.compare(hi) == Ordering::Equal,
             ]
         };
-        for piece in pieces.drain(..) {
-            if !S::has_extent(&piece.lo, &piece.hi, length) {
-                continue;
-            }
+        let mut midpoint = None;
+        for mut piece in pieces.drain(..) {
             // Kept only by number types that keep values: f64 builds none of it.
             let crossed = piece.cut.map(|other| {
                 keeps_values.then(|| match other? {
@@ -431,6 +429,26 @@ impl<S: Scalar> WedgeLists<S> {
                 Owner::New => S::kept(&kept.strip),
                 Owner::Old(k) => S::kept(&list[first + k as usize].kept.strip),
             });
+            // A crossing with the owner's mirror image across the edge's perpendicular
+            // bisector is the edge's midpoint (see `strips.rs`): that one value, not a root
+            // of eq. (2) equal to it.
+            let owner = match piece.owner {
+                Owner::New => S::kept(&kept.strip),
+                Owner::Old(k) => S::kept(&list[first + k as usize].kept.strip),
+            };
+            for (i, partner) in partners.iter().enumerate() {
+                if let (Some(owner), Some(partner)) = (&owner, partner) {
+                    if owner.reflects(partner) {
+                        let half = midpoint
+                            .get_or_insert_with(|| length.clone() * S::from_f64(0.5))
+                            .clone();
+                        *if i == 0 { &mut piece.lo } else { &mut piece.hi } = half;
+                    }
+                }
+            }
+            if !S::has_extent(&piece.lo, &piece.hi, length) {
+                continue;
+            }
             let mut named_crossings = |piece_kept: Provenance<S>| match (
                 strips.as_deref_mut(),
                 S::kept(&piece_kept.strip),
