@@ -33,27 +33,45 @@ pub(crate) struct Piece<S> {
     /// For each end, the wedge whose crossing with the owner (a root of eq. (1)) it is: the
     /// two distance functions are equal there.
     pub(crate) cut: [Option<Owner>; 2],
+    /// For each end, the wedge whose own range end it is, and which (0: `b0`, 1: `b1`).
+    pub(crate) end_of: [Option<EndOf>; 2],
 }
 
-fn push_piece<S: Scalar>(pieces: &mut Vec<Piece<S>>, lo: S, hi: S, owner: Owner) {
-    push_cut_piece(pieces, lo, hi, owner, [None, None]);
+/// A wedge's own range end: the wedge, and `0` for its `b0` or `1` for its `b1`.
+pub(crate) type EndOf = (Owner, usize);
+
+fn push_piece<S: Scalar>(
+    pieces: &mut Vec<Piece<S>>,
+    [lo, hi]: [S; 2],
+    owner: Owner,
+    end_of: [Option<EndOf>; 2],
+) {
+    push_cut_piece(pieces, [lo, hi], owner, [None, None], end_of);
 }
 
 fn push_cut_piece<S: Scalar>(
     pieces: &mut Vec<Piece<S>>,
-    lo: S,
-    hi: S,
+    [lo, hi]: [S; 2],
     owner: Owner,
     cut: [Option<Owner>; 2],
+    end_of: [Option<EndOf>; 2],
 ) {
     if let Some(last) = pieces.last_mut() {
         if last.owner == owner {
             last.hi = hi;
             last.cut[1] = cut[1];
+            last.end_of[1] = end_of[1];
             return;
         }
     }
-    pieces.push(Piece { lo, hi, owner, cut });
+    let piece = Piece {
+        lo,
+        hi,
+        owner,
+        cut,
+        end_of,
+    };
+    pieces.push(piece);
 }
 
 /// The smallest value of a distance function on `[lo, hi]` (it is convex, so the foot of the
@@ -86,16 +104,16 @@ fn split_shared_range<S: Scalar>(
     pieces: &mut Vec<Piece<S>>,
     theirs: &SourceDistance<S>,
     mine: &SourceDistance<S>,
-    [lo, hi]: [S; 2],
+    ([lo, hi], end_of): ([S; 2], [Option<EndOf>; 2]),
     (known, lower): ([Option<[S; 2]>; 2], Option<Owner>),
     id: u32,
 ) -> (Eq2Case, bool) {
     if let Some(owner) = lower {
-        push_piece(pieces, lo, hi, owner);
+        push_piece(pieces, [lo, hi], owner, end_of);
         return (Eq2Case::None, false);
     }
     if S::same_distance_function(theirs, mine, &(hi.clone() - &lo)) {
-        push_piece(pieces, lo, hi, Owner::Old(id));
+        push_piece(pieces, [lo, hi], Owner::Old(id), end_of);
         return (Eq2Case::Infinite, true);
     }
     let [[their_lo, my_lo], [their_hi, my_hi]] = [(&lo, 0), (&hi, 1)].map(|(at, i)| {
@@ -105,17 +123,17 @@ fn split_shared_range<S: Scalar>(
     });
     let their_max = S::max_of(&their_lo, &their_hi);
     if min_on(mine, &lo, &hi, &my_lo, &my_hi).compare_distance(&their_max) != Ordering::Less {
-        push_piece(pieces, lo, hi, Owner::Old(id));
+        push_piece(pieces, [lo, hi], Owner::Old(id), end_of);
         return (Eq2Case::None, false);
     }
     let my_max = S::max_of(&my_lo, &my_hi);
     if my_max.compare_distance(&min_on(theirs, &lo, &hi, &their_lo, &their_hi)) == Ordering::Less {
-        push_piece(pieces, lo, hi, Owner::New);
+        push_piece(pieces, [lo, hi], Owner::New, end_of);
         return (Eq2Case::None, false);
     }
     let bisector = S::bisector(theirs, mine, &lo, &hi, &known);
     if matches!(bisector.roots, BisectorRoots::Infinite) {
-        push_piece(pieces, lo, hi, Owner::Old(id));
+        push_piece(pieces, [lo, hi], Owner::Old(id), end_of);
         return (Eq2Case::Infinite, true);
     }
     // The owner of each stretch is the backend's answer; a tie keeps the existing wedge. The
@@ -136,9 +154,13 @@ fn split_shared_range<S: Scalar>(
             previous.is_some().then_some(other),
             end.is_some().then_some(other),
         ];
+        let ends_of = [
+            if previous.is_none() { end_of[0] } else { None },
+            if end.is_none() { end_of[1] } else { None },
+        ];
         previous = Some(owner);
         let end = end.unwrap_or_else(|| hi.clone());
-        push_cut_piece(pieces, start, end.clone(), owner, cut);
+        push_cut_piece(pieces, [start, end.clone()], owner, cut, ends_of);
         start = end;
     }
     let case = match changes {
@@ -223,13 +245,22 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
 ) {
     let mine = w.distance_function();
     let mut cursor = w.b0.clone();
+    let mut cursor_of = Some((Owner::New, 0));
     let vertices = [S::zero(), length.clone()];
     for (id, old, old_kept) in overlapping {
         if cursor.compare(&old.b0) == Ordering::Less {
-            push_piece(pieces, cursor.clone(), old.b0.clone(), Owner::New);
+            let range = [cursor.clone(), old.b0.clone()];
+            push_piece(
+                pieces,
+                range,
+                Owner::New,
+                [cursor_of, Some((Owner::Old(id), 0))],
+            );
         }
         if old.b0.compare(&w.b0) == Ordering::Less {
-            push_piece(pieces, old.b0.clone(), w.b0.clone(), Owner::Old(id));
+            let range = [old.b0.clone(), w.b0.clone()];
+            let end_of = [Some((Owner::Old(id), 0)), Some((Owner::New, 0))];
+            push_piece(pieces, range, Owner::Old(id), end_of);
         }
         let (c0, c1) = (old.b0.compare(&w.b0), old.b1.compare(&w.b1));
         let lo = if c0 == Ordering::Less { &w.b0 } else { &old.b0 }.clone();
@@ -271,8 +302,30 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
                 m.unwrap_or_else(|| mine.at(end)),
             ])
         });
+        // A wedge whose range is its own mirror image across the edge's bisector has one
+        // distance at its two ends (see `strips.rs`): one expression for both.
+        let mirrored = |k: &Provenance<S>| S::kept(&k.strip).is_some_and(|s| s.has_mirrored_ends());
+        let mut known = known;
+        for (k, kept) in [old_kept, my_kept].into_iter().enumerate() {
+            if owns[0][k] && owns[1][k] && mirrored(kept) {
+                let function = [&theirs, &mine][k];
+                let at_lo = known[0]
+                    .as_ref()
+                    .map_or_else(|| function.at(&lo), |d| d[k].clone());
+                let mut at_hi = known[1]
+                    .clone()
+                    .unwrap_or_else(|| [theirs.at(&hi), mine.at(&hi)]);
+                at_hi[k] = at_lo;
+                known[1] = Some(at_hi);
+            }
+        }
         let lower = lower_by_anchor((old, old_kept, id), (w, my_kept), &vertices);
-        let range = [lo, hi.clone()];
+        // Whose own range end `lo` and `hi` are, the existing wedge's first.
+        let end_of = [0, 1].map(|i| {
+            let [old_owns, new_owns] = owns[i];
+            (old_owns.then_some((Owner::Old(id), i))).or(new_owns.then_some((Owner::New, i)))
+        });
+        let range = ([lo, hi.clone()], end_of);
         let (case, solved) = split_shared_range(pieces, &theirs, &mine, range, (known, lower), id);
         counts.count(case);
         if let (Some(log), Some((range, coefficients))) = (log.as_deref_mut(), record) {
@@ -287,12 +340,16 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
             });
         }
         if old.b1.compare(&w.b1) == Ordering::Greater {
-            push_piece(pieces, w.b1.clone(), old.b1.clone(), Owner::Old(id));
+            let range = [w.b1.clone(), old.b1.clone()];
+            let end_of = [Some((Owner::New, 1)), Some((Owner::Old(id), 1))];
+            push_piece(pieces, range, Owner::Old(id), end_of);
         }
+        cursor_of = end_of[1];
         cursor = hi;
     }
     if cursor.compare(&w.b1) == Ordering::Less {
-        push_piece(pieces, cursor, w.b1.clone(), Owner::New);
+        let end_of = [cursor_of, Some((Owner::New, 1))];
+        push_piece(pieces, [cursor, w.b1.clone()], Owner::New, end_of);
     }
 }
 

@@ -614,13 +614,22 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let at = Planar { x, y: S::zero() };
             let ends = self.unfolding.ends(mesh, g).map(to);
             let along = continued::<S>(&path, |p| p.along(g));
+            let strip = match (&self.paths, self.offered.as_mut(), S::kept(&path)) {
+                (Some(paths), Some(offered), Some(path)) => offered.along(
+                    paths,
+                    mesh,
+                    (v, &path),
+                    (g, self.unfolding.ends(mesh, g)[0]),
+                ),
+                _ => None,
+            };
             self.add_wedge(
                 g,
                 at,
                 Side::FIRST,
                 sigma.clone(),
                 (source, k),
-                (Some(ends), None, along, None),
+                (Some(ends), None, along, strip),
             );
         }
         if !beyond.is_empty() {

@@ -48,6 +48,20 @@ impl Strip {
         self
     }
 
+    /// The same strip with its range end `i`, if not named, at range end `j` of the wedge
+    /// seen through `other` on the same edge: that end's keys, read from the same ends of the
+    /// edge.
+    pub(crate) fn ending_at(mut self, i: usize, other: &Strip, j: usize) -> Strip {
+        if self.ends[i].is_some() {
+            return self;
+        }
+        self.ends[i] = other.ends[j].and_then(|keys| {
+            let reading = |r: usize| (0..2).find(|&q| other.a[q] == self.a[r]);
+            Some([keys[reading(0)?], keys[reading(1)?]])
+        });
+        self
+    }
+
     /// Whether the strip is its own mirror image across the perpendicular bisector of its
     /// edge (read from either end of the edge, one shape): its image lies on the bisector.
     pub(crate) fn is_symmetric(&self) -> bool {
@@ -62,6 +76,17 @@ impl Strip {
         !self.is_symmetric()
             && (0..2)
                 .all(|r| (0..2).any(|q| other.a[q] == self.a[r] && other.ids[q] == self.ids[1 - r]))
+    }
+
+    /// Whether the wedge's range is its own mirror image across the edge's perpendicular
+    /// bisector, as the strip is: each range end, named from its own end of the edge, is the
+    /// other. Its distance function is then one value at its two ends.
+    pub(crate) fn has_mirrored_ends(&self) -> bool {
+        self.is_symmetric()
+            && match self.ends {
+                [Some(b0), Some(b1)] => b0[0] == b1[1] && b0[1] == b1[0],
+                _ => false,
+            }
     }
 
     /// The same strip with its range ends swapped (the wedge laid out the other way).
@@ -121,6 +146,9 @@ pub(crate) struct OfferedWedges {
 /// Marks a strip's first face, whose description follows the path to the pseudo-source.
 const FIRST_FACE: u32 = u32::MAX;
 
+/// Marks the strip of a wedge along an edge from one of its ends, the pseudo-source.
+const ALONG: u32 = u32::MAX - 1;
+
 impl OfferedWedges {
     fn intern(&mut self, before: u32, description: [u32; 4]) -> u32 {
         let next = self.strips.len() as u32;
@@ -141,9 +169,7 @@ impl OfferedWedges {
         (p, path): (VertexId, &Path),
         (f, first): (FaceId, VertexId),
     ) -> Option<Strip> {
-        let key = paths.key(mesh, path)?;
-        let next = self.paths.len() as u32;
-        let path = *self.paths.entry(key).or_insert(next);
+        let path = self.path_id(paths, mesh, path)?;
         let corners = mesh.face(f);
         let at = corners.iter().position(|&c| c == p)?;
         let (next, previous) = (corners[(at + 1) % 3], corners[(at + 2) % 3]);
@@ -164,6 +190,43 @@ impl OfferedWedges {
         let last = if first == next { previous } else { next };
         strip.ends = [first, last].map(|v| Some(self.corner(&strip, v)));
         Some(strip)
+    }
+
+    /// The strip of the wedge that pseudo-source `p`, reached along `path`, sends along its
+    /// edge `g` (whose frame runs from `first`): no face, the image at the edge's end `p`.
+    pub(crate) fn along<S: Scalar>(
+        &mut self,
+        paths: &CongruentPaths<S>,
+        mesh: &TriMesh,
+        (p, path): (VertexId, &Path),
+        (g, first): (EdgeId, VertexId),
+    ) -> Option<Strip> {
+        let path = self.path_id(paths, mesh, path)?;
+        let [u, v] = mesh.edge(g).vertices;
+        let other = if u == p { v } else { u };
+        let side = paths.class(mesh, p, other)?;
+        // Read from `p`, the image is at `a`; from the other end, at `b`.
+        let mut strip = Strip {
+            ids: [0, 1].map(|at_b| self.intern(ALONG, [path, side, at_b, 0])),
+            a: [p, other],
+            b: [other, p],
+            ends: [None; 2],
+        };
+        let last = if first == p { other } else { p };
+        strip.ends = [first, last].map(|v| Some(self.corner(&strip, v)));
+        Some(strip)
+    }
+
+    /// The interned key of the path to a pseudo-source (see `paths.rs`).
+    fn path_id<S: Scalar>(
+        &mut self,
+        paths: &CongruentPaths<S>,
+        mesh: &TriMesh,
+        path: &Path,
+    ) -> Option<u32> {
+        let key = paths.key(mesh, path)?;
+        let next = self.paths.len() as u32;
+        Some(*self.paths.entry(key).or_insert(next))
     }
 
     /// The keys, in each reading, of the strip's edge's end `v`.

@@ -449,14 +449,26 @@ impl<S: Scalar> WedgeLists<S> {
             if !S::has_extent(&piece.lo, &piece.hi, length) {
                 continue;
             }
-            let mut named_crossings = |piece_kept: Provenance<S>| match (
+            // The strips of the wedges whose own range ends are the piece's ends.
+            let ended = piece.end_of.map(|end| {
+                let (other, j) = end.filter(|(other, _)| *other != piece.owner)?;
+                let strip = match other {
+                    Owner::New => S::kept(&kept.strip),
+                    Owner::Old(k) => S::kept(&list[first + k as usize].kept.strip),
+                };
+                Some((strip?, j))
+            });
+            // The keys of the piece's ends: a crossing's, or another wedge's end's.
+            let mut named_ends = |piece_kept: Provenance<S>| match (
                 strips.as_deref_mut(),
                 S::kept(&piece_kept.strip),
             ) {
                 (Some(strips), Some(mut strip)) => {
-                    for (i, partner) in partners.iter().enumerate() {
-                        if let Some(partner) = partner {
+                    for i in 0..2 {
+                        if let Some(partner) = &partners[i] {
                             strip = strips.crossed(&strip, i, partner, v0);
+                        } else if let Some((other, j)) = &ended[i] {
+                            strip = strip.ending_at(i, other, *j);
                         }
                     }
                     piece_kept.with_strip(Some(strip))
@@ -484,7 +496,7 @@ impl<S: Scalar> WedgeLists<S> {
                         kept.clone()
                     }
                     .with_crossings(crossed);
-                    let piece_kept = named_crossings(piece_kept);
+                    let piece_kept = named_ends(piece_kept);
                     let mut wedge = w.clone();
                     wedge.b0 = piece.lo;
                     wedge.b1 = piece.hi;
@@ -497,7 +509,7 @@ impl<S: Scalar> WedgeLists<S> {
                     let kept_ends = keeps([&entry.b0, &entry.b1], &piece.lo, &piece.hi);
                     if kept_ends != [true, true] {
                         entry.kept =
-                            named_crossings(entry.kept.trimmed(kept_ends).with_crossings(crossed));
+                            named_ends(entry.kept.trimmed(kept_ends).with_crossings(crossed));
                         entry.b0 = piece.lo;
                         entry.b1 = piece.hi;
                     }
