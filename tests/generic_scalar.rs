@@ -110,6 +110,9 @@ impl Scalar for CloneOnly {
     fn measures_below_float_resolution() -> bool {
         f64::measures_below_float_resolution()
     }
+    fn front_passed(d: &SourceDistance<Self>, lo: &Self, hi: &Self, front: f64) -> bool {
+        f64::front_passed(&raw(d), &lo.0, &hi.0, front)
+    }
     fn bisector(
         a: &SourceDistance<Self>,
         b: &SourceDistance<Self>,

@@ -499,3 +499,56 @@ fn a_vertex_an_ulp_above_a_needle_s_apex_is_reached_round_the_apex_in_every_back
         }
     }
 }
+
+/// A boundary vertex `v4` (the origin) whose faces fold onto one another: `(v4, v6, v1)`, a
+/// needle `(v4, v1, v3)` and `(v2, v3, v4)`, flipped against the needle and folded back over
+/// the first, all in the plane z = 0, with the boundary neighbours `v6` and `v2` unwelded
+/// copies of one point (the outsider's combo 1196 of seed 3, with a fin on the edge
+/// `(v0, v2)`). Its faces turn the same way in their own orders and its boundary neighbours lie
+/// on a line through it, so it was taken for an exactly flat vertex and sent no wedge into its
+/// faces: from `v6`, whose only face is `(v4, v6, v1)`, `v0` was reached through `v1` at
+/// sqrt 3 + sqrt 2 = 3.146 in every backend, against 2.618 from `v0`. The geodesic runs along
+/// the edge `(v6, v4)` and from `v4` across the edge `(v2, v3)` to the apex `v0`.
+#[test]
+fn a_boundary_vertex_whose_faces_fold_onto_each_other_sends_wedges_into_them_in_every_backend() {
+    let mesh = TriMesh::new(
+        vec![
+            [0.0, 0.0, 1.0],
+            [1.0, 0.0, 0.0],
+            [-0.4999999999999998, 0.8660254037844387, 0.0],
+            [0.999999999985, -8.660254037844382e-12, 0.0],
+            [0.0, 0.0, 0.0],
+            [-0.44179674710093464, -0.4667574167293927, 1.247331232634264],
+            [-0.4999999999999998, 0.8660254037844387, 0.0],
+        ],
+        vec![
+            [0, 1, 2],
+            [0, 2, 3],
+            [0, 3, 1],
+            [4, 6, 1],
+            [2, 3, 4],
+            [4, 1, 3],
+            [0, 2, 5],
+        ],
+    )
+    .expect("usable mesh");
+    assert!(!mesh.is_flat_vertex(VertexId(4)));
+    // v4 and v0 unfolded on either side of the edge (v2, v3).
+    let p = |v: u32| mesh.position(VertexId(v));
+    let edge = p(3) - p(2);
+    let frame = |q: DVec3| {
+        let to = q - p(2);
+        [to.dot(edge), to.cross(edge).length()].map(|x| x / edge.length())
+    };
+    let ([x0, h0], [x4, h4]) = (frame(p(0)), frame(p(4)));
+    let want = straight(&mesh, 6, 4) + (x0 - x4).hypot(h0 + h4);
+    for (from, to) in [(6, 0), (0, 6)] {
+        for (backend, d) in every_backend(&mesh, from) {
+            assert!(
+                (d[to] - want).abs() <= 1e-12 * want,
+                "{backend}: d(v{from}, v{to}) = {}, want {want}",
+                d[to]
+            );
+        }
+    }
+}

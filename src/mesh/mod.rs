@@ -251,7 +251,8 @@ impl TriMesh {
 
     /// Whether the vertex is exactly flat: a vertex where the surface is a manifold, on no
     /// degenerate face, whose faces lie exactly in one plane and turn the same way in it once
-    /// around, or, on the boundary, whose two boundary neighbours lie on one line through it
+    /// around, on either side of each edge two of them share (none folded onto its
+    /// neighbour), or, on the boundary, whose two boundary neighbours lie on one line through it
     /// (an angle of exactly pi): decided exactly on the input coordinates by orient3d and
     /// orient2d. No geodesic bends there: the straight way through it is a straight way in
     /// the plane.

@@ -106,17 +106,24 @@ fn unit_scale(positions: &[DVec3]) -> f64 {
     }
 }
 
-/// Whether a triangle (in unit-scaled coordinates) is degenerate for the f64 geometry: its
-/// corners collinear to within rounding, or two of them coincident. The sine of its largest
-/// angle is then below a few ulps, and an unfolding computed in f64 across it means little.
-/// Whether the faces of a vertex's star (its corners, in each face's order) lie exactly in
-/// the plane of the first and all turn the same way in it, and the three points `straight`, if
-/// given, lie on one line, decided exactly on the coordinates (Shewchuk's orient3d and
-/// orient2d, as `robust` evaluates them). With an angle sum below 3 pi (once around) an
-/// interior vertex is then exactly flat, and so is a boundary vertex with its boundary
-/// neighbours on a line through it and an angle sum below 3 pi / 2 (exactly pi): no geodesic
-/// bends there.
-fn flat_star(mut star: impl Iterator<Item = [DVec3; 3]>, straight: Option<[DVec3; 3]>) -> bool {
+/// Whether the faces of the star of vertex `v` (each face's corners, in its order, and their
+/// positions by `at`) lie exactly in the plane of the first, all turn the same way in it, and
+/// lie on either side of each edge of `v` that two of them share, and the three points
+/// `straight`, if given, lie on one line, decided exactly on the coordinates (Shewchuk's
+/// orient3d and orient2d, as `robust` evaluates them). With an angle sum below 3 pi (once
+/// around) an interior vertex is then exactly flat, and so is a boundary vertex with its
+/// boundary neighbours on a line through it and an angle sum below 3 pi / 2 (exactly pi): no
+/// geodesic bends there. The turns alone tell a face folded over onto its neighbour only where
+/// the faces are oriented alike: a face flipped against its neighbour and folded onto it turns
+/// as they do (a boundary vertex with its faces folded into 240 degrees, its boundary
+/// neighbours at one point, was taken for flat and sent no wedge into its faces).
+fn flat_star(
+    v: usize,
+    faces: &[[u32; 3]],
+    at: impl Fn(usize) -> DVec3,
+    straight: Option<[DVec3; 3]>,
+) -> bool {
+    let mut star = faces.iter().map(|f| f.map(|c| at(c as usize)));
     let Some([a, b, c]) = star.next() else {
         return false;
     };
@@ -155,14 +162,37 @@ fn flat_star(mut star: impl Iterator<Item = [DVec3; 3]>, straight: Option<[DVec3
             return false;
         }
     }
-    star.all(|f| {
+    let in_plane = star.all(|f| {
         f.iter()
             .all(|&q| robust::orient3d(c3(a), c3(b), c3(c), c3(q)) == 0.0)
             && robust::orient2d(c2(f[0]), c2(f[1]), c2(f[2])) != 0.0
             && turn(f) == first
-    })
+    });
+    // Each edge (v, w) of the star with the corner opposite it in each face that has it.
+    let mut wings: Vec<(u32, u32)> = faces
+        .iter()
+        .flat_map(|f| {
+            let k = f
+                .iter()
+                .position(|&c| c as usize == v)
+                .expect("a corner of the star");
+            let (p, q) = (f[(k + 1) % 3], f[(k + 2) % 3]);
+            [(p, q), (q, p)]
+        })
+        .collect();
+    wings.sort_unstable();
+    let centre = c2(at(v));
+    in_plane
+        && wings.windows(2).all(|pair| {
+            let [(w, x), (u, y)] = [pair[0], pair[1]];
+            let side = |o: u32| robust::orient2d(centre, c2(at(w as usize)), c2(at(o as usize)));
+            w != u || side(x) * side(y) < 0.0
+        })
 }
 
+/// Whether a triangle (in unit-scaled coordinates) is degenerate for the f64 geometry: its
+/// corners collinear to within rounding, or two of them coincident. The sine of its largest
+/// angle is then below a few ulps, and an unfolding computed in f64 across it means little.
 fn is_degenerate(p: [DVec3; 3]) -> bool {
     /// Sines of the face's largest angle below this count as degenerate: well above the
     /// rounding of a cross product of unit vectors (a few ulps), far below any angle a
@@ -447,14 +477,13 @@ impl Topology {
             .map(|v| {
                 let star = &vertex_face_list
                     [vertex_face_start[v] as usize..vertex_face_start[v + 1] as usize];
-                let corners = star
-                    .iter()
-                    .map(|f| faces[f.index()].map(|c| scaled(c as usize)));
+                let corners: Vec<[u32; 3]> = star.iter().map(|f| faces[f.index()]).collect();
                 if on_degenerate_face[v] || not_manifold[v] {
                     return false;
                 }
                 if !boundary_vertex[v] {
-                    return angle_sum[v] < 3.0 * std::f64::consts::PI && flat_star(corners, None);
+                    return angle_sum[v] < 3.0 * std::f64::consts::PI
+                        && flat_star(v, &corners, scaled, None);
                 }
                 // On the boundary: flat where the boundary runs straight through the vertex.
                 let mut ends = vertex_edge_list
@@ -474,7 +503,8 @@ impl Topology {
                     scaled(u.index())
                 };
                 let straight = [far(a), scaled(v), far(b)];
-                angle_sum[v] < 1.5 * std::f64::consts::PI && flat_star(corners, Some(straight))
+                angle_sum[v] < 1.5 * std::f64::consts::PI
+                    && flat_star(v, &corners, scaled, Some(straight))
             })
             .collect();
 

@@ -12,7 +12,7 @@ use super::stats::Stats;
 use super::strips::OfferedWedges;
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{EdgeId, Side, SourceId, VertexId};
-use crate::scalar::{Scalar, Site, SourceDistance};
+use crate::scalar::{Scalar, Site, SourceDistance, FRONT_MARGIN};
 use std::cmp::Ordering;
 use std::ops::Range;
 
@@ -92,15 +92,14 @@ impl<S: Scalar> Entry<S> {
     }
 
     /// The largest distance the wedge gives on its range, in `f64` (at an end: the distance
-    /// function is convex).
+    /// function is convex): when to ask whether the front has passed it, not the answer.
     fn farthest(&self) -> f64 {
-        let (x, y, sigma) = (
-            self.source_x.to_f64(),
-            self.source_y.to_f64(),
-            self.sigma.to_f64(),
-        );
-        let at = |t: f64| sigma + ((t - x) * (t - x) + y * y).sqrt();
-        at(self.b0.to_f64()).max(at(self.b1.to_f64()))
+        let d = SourceDistance {
+            x: self.source_x.to_f64(),
+            y: self.source_y.to_f64(),
+            sigma: self.sigma.to_f64(),
+        };
+        d.at(&self.b0.to_f64()).max(d.at(&self.b1.to_f64()))
     }
 
     /// The wedge, on `edge`.
@@ -198,13 +197,6 @@ fn find_near<S: Scalar>(list: &[Entry<S>], place: usize, serial: u32) -> Option<
     None
 }
 
-/// How far beyond the largest distance of an edge's wedges the front must be before they are
-/// given up ([`WedgeLists::close`]): `2^-20` of it, far above the rounding of the `f64`
-/// distances compared there (slivers 1e8 long put float distances 1e-8 off) and above every
-/// backend's tie between distances, so that a wedge arriving later is higher than the edge's
-/// wedges everywhere, by every backend's decision. The wedges are held that much longer.
-const CLOSING_MARGIN: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
-
 /// The wedges of every edge of a running propagation.
 pub(crate) struct WedgeLists<S: Scalar> {
     lists: Vec<Vec<Entry<S>>>,
@@ -280,11 +272,11 @@ impl<S: Scalar> WedgeLists<S> {
         if list.is_empty() || list.iter().any(|x| x.queued) {
             return None;
         }
-        Some(list.iter().map(Entry::farthest).fold(0.0, f64::max) * CLOSING_MARGIN)
+        Some(list.iter().map(Entry::farthest).fold(0.0, f64::max) * FRONT_MARGIN)
     }
 
     /// Gives up the wedges of edge `e` (of length `length`) if the front, at `key`, is beyond
-    /// every distance they give ([`CLOSING_MARGIN`]), all of them have been propagated and they
+    /// every distance they give, as the backend decides it ([`Scalar::front_passed`]), all of them have been propagated and they
     /// cover the edge without a gap that has extent. A wedge arriving later is no nearer than
     /// the front, so it would lose every point of the edge to them: it is dropped unseen, and
     /// the vertex distances are those of a run that keeps every wedge. What is given up is the
@@ -302,7 +294,9 @@ impl<S: Scalar> WedgeLists<S> {
             && list
                 .windows(2)
                 .all(|p| !S::has_extent(&p[0].b1, &p[1].b0, length));
-        let passed = list.iter().map(Entry::farthest).fold(0.0, f64::max) * CLOSING_MARGIN <= key;
+        let passed = list
+            .iter()
+            .all(|x| S::front_passed(&x.distance_function(), &x.b0, &x.b1, key));
         if covered && passed && list.iter().all(|x| !x.queued) {
             self.entries -= list.len();
             *list = Vec::new();

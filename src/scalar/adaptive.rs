@@ -333,6 +333,18 @@ impl Scalar for Adaptive {
         false
     }
 
+    /// As the `f64` backend, on the `f64` values: the distances compared are constructions,
+    /// rounded as that backend's, and the margin is what covers their rounding.
+    #[inline(always)]
+    fn front_passed(d: &SourceDistance<Self>, lo: &Self, hi: &Self, front: f64) -> bool {
+        let d = SourceDistance {
+            x: d.x.0,
+            y: d.y.0,
+            sigma: d.sigma.0,
+        };
+        f64::front_passed(&d, &lo.0, &hi.0, front)
+    }
+
     #[inline(always)]
     fn sign(&self) -> Sign {
         sign_of(self.0)

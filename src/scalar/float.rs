@@ -6,6 +6,7 @@
 
 use super::{
     Bisector, BisectorRoots, Eq2Coefficients, Field, Lower, Ring, Scalar, Sign, SourceDistance,
+    FRONT_MARGIN,
 };
 use std::cmp::Ordering;
 
@@ -89,6 +90,12 @@ impl Scalar for f64 {
     #[inline(always)]
     fn measures_below_float_resolution() -> bool {
         false
+    }
+
+    /// In `f64` arithmetic on the constructed values, with the margin [`FRONT_MARGIN`].
+    #[inline(always)]
+    fn front_passed(d: &SourceDistance<f64>, lo: &f64, hi: &f64, front: f64) -> bool {
+        d.at(lo).max(d.at(hi)) * FRONT_MARGIN <= front
     }
 
     #[inline(always)]

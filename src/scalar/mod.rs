@@ -69,6 +69,15 @@ use std::cmp::Ordering;
 use std::fmt::Debug;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+/// How far the front of a propagation must be beyond the largest distance a wedge gives on its
+/// range before the wedge's edge may be given up ([`Scalar::front_passed`]): `2^-20` of it,
+/// far above the rounding of the `f64` distances the float backends compare there (slivers
+/// 1e8 long put float distances 1e-8 off) and above every backend's tie between distances, so
+/// that a wedge arriving later is higher than the edge's wedges everywhere, by every backend's
+/// decision. The wedges are held that much longer. The engine asks again once the front has
+/// passed the `f64` value of that distance times this margin.
+pub(crate) const FRONT_MARGIN: f64 = 1.0 + 1.0 / (1u64 << 20) as f64;
+
 /// Sign of a number, as decided by its backend.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
@@ -272,6 +281,16 @@ pub trait Scalar: Field {
     fn frames_from_nearer_end() -> bool {
         false
     }
+
+    /// Whether the front of the propagation, at `front` (the `f64` key of the wedge popped last:
+    /// every wedge reaching an edge later gives distances no nearer than it, up to the rounding
+    /// of keys), lies beyond every distance the distance function `d` gives on `[lo, hi]`, by
+    /// a margin that covers that rounding ([`FRONT_MARGIN`]): then a wedge arriving later
+    /// loses every point of the range to this one, and the edge's wedges may be given up
+    /// ([`propagate_vertices`](crate::propagate_vertices)). `false` is always safe (the wedges
+    /// are kept), so a backend that cannot certify `true` answers `false`. `D` is convex on
+    /// the range, so its largest value is at an end.
+    fn front_passed(d: &SourceDistance<Self>, lo: &Self, hi: &Self, front: f64) -> bool;
 
     /// Whether this number type measures edges shorter than `2^-500` of the model's size
     /// ([`ValidationReport::float_unresolved_edges`](crate::ValidationReport)): their squared

@@ -67,6 +67,14 @@ pub const DEFAULT_PRECISION_CAP: u32 = 8192;
 /// The first precision of the exact stage, in bits.
 const FIRST_PRECISION: u32 = 128;
 
+/// The margin by which the front must be beyond an enclosure of a wedge's distances before its
+/// edge is given up ([`Scalar::front_passed`]): half of [`FRONT_MARGIN`](super::FRONT_MARGIN),
+/// `2^-21`. The later wedges' distances lie above the front to the rounding of its `f64` key
+/// (ulps), far below this; the other half covers the width of the enclosure and the rounding
+/// of the `f64` value at which the engine asks, so that the edge is given up when the engine
+/// first asks, as in the float backends.
+const FRONT_CERTIFIED_MARGIN: f64 = 1.0 + 1.0 / (1u64 << 21) as f64;
+
 /// The precision, in bits, up to which a sign is sought without a proof of zero where the
 /// engine can do without it ([`CertifiedSign::clear_sign`]) and before a square root's radicand
 /// is taken as positive by the normal form.
@@ -356,6 +364,20 @@ impl Real {
         [lo.to_f64(Round::Down), hi.to_f64(Round::Up)]
     }
 
+    /// An `f64` enclosure from the [`FIRST_PRECISION`]-bit one that [`Field::to_f64`] computes
+    /// and keeps (a few ulps wide), unbounded for a value that may divide by zero.
+    fn narrow_enclosure(&self) -> [f64; 2] {
+        if check_divisors(&self.0).is_err() {
+            return [f64::NEG_INFINITY, f64::INFINITY];
+        }
+        let f = self.filter();
+        if f.lo == f.hi {
+            return [f.lo, f.hi];
+        }
+        let (lo, hi) = refine::enclosure(&self.0, FIRST_PRECISION);
+        [lo.to_f64(Round::Down), hi.to_f64(Round::Up)]
+    }
+
     /// The sign, counted as a decision of the current run.
     fn decide(&self) -> Sign {
         let (sign, certificate) = self.certified_sign();
@@ -522,6 +544,24 @@ impl Scalar for Real {
         true
     }
 
+    /// Certified on enclosures: the upper end of an interval enclosure of `D` at the range's
+    /// ends (from the operands' [`Real::narrow_enclosure`]s, which the engine's `f64` values
+    /// of them already computed), times [`FRONT_CERTIFIED_MARGIN`], at most `front`. Not a
+    /// decision of the run's counts: `false` keeps the wedges, which is always right.
+    fn front_passed(d: &SourceDistance<Self>, lo: &Self, hi: &Self, front: f64) -> bool {
+        let enclose = |v: &Real| {
+            let [lo, hi] = v.narrow_enclosure();
+            Interval { lo, hi }
+        };
+        let d = SourceDistance {
+            x: enclose(&d.x),
+            y: enclose(&d.y),
+            sigma: enclose(&d.sigma),
+        };
+        let farthest = d.at(&enclose(lo)).hi.max(d.at(&enclose(hi)).hi);
+        (Interval::point(farthest) * Interval::point(FRONT_CERTIFIED_MARGIN)).hi <= front
+    }
+
     fn compare(&self, other: &Self) -> Ordering {
         let (a, b) = (self.filter(), other.filter());
         // Values with divisors that may be zero are compared by the sign of their difference,
@@ -656,6 +696,30 @@ mod tests {
     fn hidden_zero() -> Real {
         let r2 = int(2).sqrt();
         r2.clone() * &r2 - int(2)
+    }
+
+    /// A pseudo-source at 1e16 in its edge's frame, a range 0.5 to 1 beyond it: the distances
+    /// there are 0.5 to 1, but their `f64` values, `1e16 + 1` less `1e16` in `f64`, are 0.
+    /// With the front at 0.5, the `f64` comparison the engine used gave the edge up although a
+    /// wedge arriving later could win its far end; the enclosures do not.
+    #[test]
+    fn the_front_passes_a_wedge_by_its_enclosure_not_by_its_f64_values() {
+        let far = Real::from_f64(1e16);
+        let d = SourceDistance {
+            x: far.clone(),
+            y: int(0),
+            sigma: int(0),
+        };
+        let (lo, hi) = (far.clone() + Real::from_f64(0.5), far + int(1));
+        let rounded = SourceDistance {
+            x: d.x.to_f64(),
+            y: 0.0,
+            sigma: 0.0,
+        };
+        assert!(f64::front_passed(&rounded, &lo.to_f64(), &hi.to_f64(), 0.5));
+        assert!(!Real::front_passed(&d, &lo, &hi, 0.5));
+        assert!(!Real::front_passed(&d, &lo, &hi, 1.0));
+        assert!(Real::front_passed(&d, &lo, &hi, 2.5));
     }
 
     #[test]
