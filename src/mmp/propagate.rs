@@ -593,15 +593,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     point: regions.corner(region, v).clone(),
                 });
             let across = continued::<S>(&path, |p| p.across(f));
-            let strip = match (&self.paths, self.offered.as_mut(), S::kept(&path)) {
-                (Some(paths), Some(offered), Some(path)) => offered.first(
-                    paths,
-                    mesh,
-                    (v, &path),
-                    (f, self.unfolding.ends(mesh, g)[0]),
-                ),
-                _ => None,
-            };
+            let strip = self.start_strip((v, &path), g, Some(f));
             let kept = (Some(ends), image, across, strip);
             self.add_wedge(g, at, side, sigma.clone(), (source, k), kept);
         }
@@ -614,15 +606,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let at = Planar { x, y: S::zero() };
             let ends = self.unfolding.ends(mesh, g).map(to);
             let along = continued::<S>(&path, |p| p.along(g));
-            let strip = match (&self.paths, self.offered.as_mut(), S::kept(&path)) {
-                (Some(paths), Some(offered), Some(path)) => offered.along(
-                    paths,
-                    mesh,
-                    (v, &path),
-                    (g, self.unfolding.ends(mesh, g)[0]),
-                ),
-                _ => None,
-            };
+            let strip = self.start_strip((v, &path), g, None);
             self.add_wedge(
                 g,
                 at,
@@ -947,6 +931,27 @@ impl<'m, S: Scalar> Engine<'m, S> {
             } else {
                 self.insert(child, kept);
             }
+        }
+    }
+
+    /// The strip of the wedge that vertex `v`, reached along `path`, sends onto edge `g`
+    /// (across face `f`, or along `g`), where the run knows wedges offered again (see
+    /// `strips.rs`).
+    fn start_strip(
+        &mut self,
+        (v, path): (VertexId, &S::Kept<Path>),
+        g: EdgeId,
+        across: Option<FaceId>,
+    ) -> Option<Strip> {
+        let (Some(paths), Some(offered), Some(path)) =
+            (&self.paths, self.offered.as_mut(), S::kept(path))
+        else {
+            return None;
+        };
+        let first = self.unfolding.ends(self.mesh, g)[0];
+        match across {
+            Some(f) => offered.first(paths, self.mesh, (v, &path), (f, first)),
+            None => offered.along(paths, self.mesh, (v, &path), (g, first)),
         }
     }
 

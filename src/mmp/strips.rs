@@ -181,15 +181,8 @@ impl OfferedWedges {
             ];
             Some(self.intern(FIRST_FACE, [path, sides[0], sides[1], sides[2]]))
         };
-        let mut strip = Strip {
-            ids: [read(next, previous)?, read(previous, next)?],
-            a: [next, previous],
-            b: [previous, next],
-            ends: [None; 2],
-        };
-        let last = if first == next { previous } else { next };
-        strip.ends = [first, last].map(|v| Some(self.corner(&strip, v)));
-        Some(strip)
+        let ids = [read(next, previous)?, read(previous, next)?];
+        Some(self.spanning(ids, [next, previous], first))
     }
 
     /// The strip of the wedge that pseudo-source `p`, reached along `path`, sends along its
@@ -206,15 +199,22 @@ impl OfferedWedges {
         let other = if u == p { v } else { u };
         let side = paths.class(mesh, p, other)?;
         // Read from `p`, the image is at `a`; from the other end, at `b`.
+        let ids = [0, 1].map(|at_b| self.intern(ALONG, [path, side, at_b, 0]));
+        Some(self.spanning(ids, [p, other], first))
+    }
+
+    /// The strip of ids `ids` read from `a` and from `b`, over its whole edge (whose frame runs
+    /// from `first`): the range's ends are the edge's.
+    fn spanning(&mut self, ids: [u32; 2], [a, b]: [VertexId; 2], first: VertexId) -> Strip {
         let mut strip = Strip {
-            ids: [0, 1].map(|at_b| self.intern(ALONG, [path, side, at_b, 0])),
-            a: [p, other],
-            b: [other, p],
+            ids,
+            a: [a, b],
+            b: [b, a],
             ends: [None; 2],
         };
-        let last = if first == p { other } else { p };
+        let last = if first == a { b } else { a };
         strip.ends = [first, last].map(|v| Some(self.corner(&strip, v)));
-        Some(strip)
+        strip
     }
 
     /// The interned key of the path to a pseudo-source (see `paths.rs`).
