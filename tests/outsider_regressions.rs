@@ -113,6 +113,19 @@ fn traced<S: Scalar>(mesh: &TriMesh, source: u32, target: u32) -> (f64, f64) {
     (path.length(), path.distance)
 }
 
+/// Asserts that every backend gives `d(a, b)` and `d(b, a)` as `want`, within 1e-12 relative.
+fn assert_both_ways_in_every_backend(mesh: &TriMesh, (a, b): (u32, u32), want: f64) {
+    for (from, to) in [(a, b), (b, a)] {
+        for (backend, d) in every_backend(mesh, from) {
+            assert!(
+                (d[to as usize] - want).abs() <= 1e-12 * want,
+                "{backend}: d(v{from}, v{to}) = {:e}, want {want:e}",
+                d[to as usize]
+            );
+        }
+    }
+}
+
 fn every_backend_traced(
     mesh: &TriMesh,
     source: u32,
@@ -440,15 +453,7 @@ fn vertices_an_ulp_from_a_unit_edge_s_end_keep_their_distances_in_every_backend(
     )
     .expect("usable mesh");
     let want = straight(&mesh, 0, 3) + straight(&mesh, 3, 6);
-    for (from, to) in [(0, 6), (6, 0)] {
-        for (backend, d) in every_backend(&mesh, from) {
-            assert!(
-                (d[to] - want).abs() <= 1e-12 * want,
-                "{backend}: d(v{from}, v{to}) = {:e}, want {want:e}",
-                d[to]
-            );
-        }
-    }
+    assert_both_ways_in_every_backend(&mesh, (0, 6), want);
 }
 
 /// A square pyramid of height 1 (rotated about its axis in floats) whose apex `v0` has a copy
@@ -489,15 +494,7 @@ fn a_vertex_an_ulp_above_a_needle_s_apex_is_reached_round_the_apex_in_every_back
     )
     .expect("usable mesh");
     let want = straight(&mesh, 5, 0) + straight(&mesh, 0, 1);
-    for (from, to) in [(5, 1), (1, 5)] {
-        for (backend, d) in every_backend(&mesh, from) {
-            assert!(
-                (d[to] - want).abs() <= 1e-12 * want,
-                "{backend}: d(v{from}, v{to}) = {:e}, want {want:e}",
-                d[to]
-            );
-        }
-    }
+    assert_both_ways_in_every_backend(&mesh, (5, 1), want);
 }
 
 /// A boundary vertex `v4` (the origin) whose faces fold onto one another: `(v4, v6, v1)`, a
@@ -542,13 +539,5 @@ fn a_boundary_vertex_whose_faces_fold_onto_each_other_sends_wedges_into_them_in_
     };
     let ([x0, h0], [x4, h4]) = (frame(p(0)), frame(p(4)));
     let want = straight(&mesh, 6, 4) + (x0 - x4).hypot(h0 + h4);
-    for (from, to) in [(6, 0), (0, 6)] {
-        for (backend, d) in every_backend(&mesh, from) {
-            assert!(
-                (d[to] - want).abs() <= 1e-12 * want,
-                "{backend}: d(v{from}, v{to}) = {}, want {want}",
-                d[to]
-            );
-        }
-    }
+    assert_both_ways_in_every_backend(&mesh, (6, 0), want);
 }
