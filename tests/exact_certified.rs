@@ -209,6 +209,21 @@ fn sums_of_nested_distances_on_a_trimesh_annulus_are_certified_and_agree_with_f6
     assert_certified_and_agrees_with_f64(&mesh, SurfacePoint::Vertex(VertexId(0)), name);
 }
 
+/// A plate with a polygonal hole (`tests/data/plate_hole.py`): the hole's rim is concave, so
+/// its vertices are pseudo-sources, and the wall below is vertical, so in the frame of a wall
+/// edge two rim pseudo-sources stand level, at the same `x` (eq. (2)'s `alpha` is zero). At a
+/// root of eq. (2), `q2 - beta^2` then has slope zero: its sign is that of the constant, which
+/// the slope's factor `alpha` shows, not a cancellation of two deep terms. Before, each of
+/// these runs left 1 decision uncertified (and cad_featuretype.obj 198 of its 249).
+#[test]
+fn rim_pseudo_sources_level_above_a_wall_edge_are_certified_and_agree_with_f64() {
+    for (name, source) in [("plate_hole_24.obj", 28), ("plate_hole_40.obj", 0)] {
+        let mesh = common::data_mesh(name);
+        let source = SurfacePoint::Vertex(VertexId(source));
+        assert_certified_and_agrees_with_f64(&mesh, source, name);
+    }
+}
+
 /// The faces of an `n` x `n` grid of squares whose `(n + 1)^2` vertices are numbered row by
 /// row, each square split by its diagonal from its first corner.
 fn lattice_faces(n: u32) -> Vec<[u32; 3]> {

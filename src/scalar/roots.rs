@@ -366,8 +366,11 @@ pub(crate) fn crossings<T: CertifiedSign>(
     }
     let roots = TwoRoots { eq2: &eq2, sa };
     let zero = T::from_f64(0.0);
-    // At a root, L(u) = 2 alpha u + gamma; q2(u) - beta^2 reduced by P / A is linear too.
-    let m_q = -(two.clone() * &x2) - &(eq2.b.clone() / &eq2.a);
+    // At a root, L(u) = 2 alpha u + gamma; q2(u) - beta^2 reduced by P / A is linear too, with
+    // slope -2 x2 - B / A = -alpha (2 alpha x2 + gamma) / A: written so, it is zero with alpha
+    // (pseudo-sources level along the edge, as on a wall below a polygonal rim) by its factor,
+    // not by the cancellation of two deep terms.
+    let m_q = -(alpha.clone() * &(two.clone() * &alpha * &x2 + &gamma)) / &eq2.a;
     let c_q = q2_excess.clone() - &(eq2.c.clone() / &eq2.a);
     let two_alpha = two.clone() * &alpha;
     // At the foot of a pseudo-source on the edge's line (a vertex's wedge along its edge), P is
