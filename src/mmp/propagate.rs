@@ -733,15 +733,6 @@ impl<'m, S: Scalar> Engine<'m, S> {
             (Some(paths), Some(p)) => paths.length(mesh, &p, apex_distance),
             _ => apex_distance(),
         });
-        let shadow = layout.apex_shadow(&s);
-        let reach = || layout.shadow_reach(&s, &shadow);
-        let apex = S::within(&shadow, &w.b0, &w.b1, reach).then(|| {
-            let d = S::kept(&at_apex).unwrap_or_else(apex_distance);
-            (layout.apex_vertex(), d)
-        });
-        let zero = S::zero();
-        let one = S::from_f64(1.0);
-        let clamp = |t: S| S::max_of(&zero, &S::min_of(&one, &t));
         // A range end at an end of the edge is that vertex, which lies on the near edge at
         // t = 0 (v0) or on the far edge at u = 1 (v1): exactly there, not at a constructed
         // quotient equal to it that an exact backend would have to prove equal.
@@ -749,6 +740,31 @@ impl<'m, S: Scalar> Engine<'m, S> {
             w.b0.sign() == Sign::Zero,
             w.b1.compare(length) == Ordering::Equal,
         );
+        // In a flat region, the apex whose shadow is a vertex of the edge (the image, that
+        // vertex and the apex on one line, as vertices along a straight feature of a CAD model
+        // are) is known by the orientation of the three points in the region's frame, not by
+        // comparing a constructed shadow with the range's end.
+        let ends = self.unfolding.ends(mesh, w.edge);
+        let shadow_at_vertex = |i: usize| match (flat, &image) {
+            (Some((regions, region)), Some(p)) => {
+                let v = regions.corner(region, ends[i]);
+                let a = regions.corner(region, layout.apex_vertex());
+                S::orientation([&p[0], &p[1]], [&v[0], &v[1]], [&a[0], &a[1]]) == Sign::Zero
+            }
+            _ => false,
+        };
+        let shadow = layout.apex_shadow(&s);
+        let reach = || layout.shadow_reach(&s, &shadow);
+        let apex_inside = (at_v0 && shadow_at_vertex(0))
+            || (at_v1 && shadow_at_vertex(1))
+            || S::within(&shadow, &w.b0, &w.b1, reach);
+        let apex = apex_inside.then(|| {
+            let d = S::kept(&at_apex).unwrap_or_else(apex_distance);
+            (layout.apex_vertex(), d)
+        });
+        let zero = S::zero();
+        let one = S::from_f64(1.0);
+        let clamp = |t: S| S::max_of(&zero, &S::min_of(&one, &t));
         // The anchor of a child's end on the ray through range end `i`, in the frame of edge
         // `g`: the end's anchor carried along (`to`), or, where the ray passes a vertex end
         // of the edge into the face (that vertex's shadow line), the vertex: the apex of the
