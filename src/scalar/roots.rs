@@ -326,6 +326,19 @@ pub(crate) fn crossings<T: CertifiedSign>(
             _ => single(-(gamma.clone() / &(two.clone() * &alpha))),
         };
     }
+    // Pseudo-sources level along the edge (alpha = 0, beta != 0): the difference of the
+    // distances is a strictly monotone function of (t - x2)^2, so it vanishes at most once on
+    // either side of their common foot. A tie known at an end with the foot beyond it (a rim
+    // vertex lit straight along the rim by another, both giving the edge's vertex one
+    // distance) is then the only solution on the range, and no gap need be proved zero.
+    if alpha_sign == Sign::Zero {
+        if ties[0] && x2.certified_sign()? != Sign::Positive {
+            return Some(Crossings::None);
+        }
+        if ties[1] && (x2.clone() - &width).certified_sign()? != Sign::Negative {
+            return Some(Crossings::None);
+        }
+    }
     match sb {
         Some(Sign::Zero) => return Some(Crossings::None),
         Some(_) => return single(-(eq2.c.clone() / &eq2.b)),
