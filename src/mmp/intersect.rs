@@ -11,7 +11,7 @@
 //! engine's edge lists ([`wedge_lists`](super::wedge_lists)) store the pieces as wedges.
 
 use super::planar::Planar;
-use super::provenance::{Anchor, Provenance};
+use super::provenance::{compare_ends, Anchor, Provenance};
 use super::stats::{Eq2Counts, Eq2Decision};
 use super::wedge::{PseudoSource, Wedge};
 use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Lower, Scalar, SourceDistance};
@@ -246,9 +246,20 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
     let mine = w.distance_function();
     let mut cursor = w.b0.clone();
     let mut cursor_of = Some((Owner::New, 0));
+    // The provenance of the wedge whose own range end the cursor is, and which end.
+    let mut cursor_kept = Some((my_kept, 0));
     let vertices = [S::zero(), length.clone()];
+    // Range ends compared where the strips do not name them alike.
+    let order = |a: (&S, Option<(&Provenance<S>, usize)>), b: (&S, &Provenance<S>, usize)| match a {
+        (value, Some((kept, i))) => compare_ends((value, kept, i), b),
+        (value, None) => value.compare(b.0),
+    };
     for (id, old, old_kept) in overlapping {
-        if cursor.compare(&old.b0) == Ordering::Less {
+        let (c0, c1) = (
+            compare_ends((&old.b0, old_kept, 0), (&w.b0, my_kept, 0)),
+            compare_ends((&old.b1, old_kept, 1), (&w.b1, my_kept, 1)),
+        );
+        if order((&cursor, cursor_kept), (&old.b0, old_kept, 0)) == Ordering::Less {
             let range = [cursor.clone(), old.b0.clone()];
             push_piece(
                 pieces,
@@ -257,12 +268,11 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
                 [cursor_of, Some((Owner::Old(id), 0))],
             );
         }
-        if old.b0.compare(&w.b0) == Ordering::Less {
+        if c0 == Ordering::Less {
             let range = [old.b0.clone(), w.b0.clone()];
             let end_of = [Some((Owner::Old(id), 0)), Some((Owner::New, 0))];
             push_piece(pieces, range, Owner::Old(id), end_of);
         }
-        let (c0, c1) = (old.b0.compare(&w.b0), old.b1.compare(&w.b1));
         let lo = if c0 == Ordering::Less { &w.b0 } else { &old.b0 }.clone();
         let hi = if c1 == Ordering::Greater {
             &w.b1
@@ -339,15 +349,20 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
                 coefficients,
             });
         }
-        if old.b1.compare(&w.b1) == Ordering::Greater {
+        if c1 == Ordering::Greater {
             let range = [w.b1.clone(), old.b1.clone()];
             let end_of = [Some((Owner::New, 1)), Some((Owner::Old(id), 1))];
             push_piece(pieces, range, Owner::Old(id), end_of);
         }
         cursor_of = end_of[1];
+        cursor_kept = if owns[1][0] {
+            Some((old_kept, 1))
+        } else {
+            owns[1][1].then_some((my_kept, 1))
+        };
         cursor = hi;
     }
-    if cursor.compare(&w.b1) == Ordering::Less {
+    if order((&cursor, cursor_kept), (&w.b1, my_kept, 1)) == Ordering::Less {
         let end_of = [cursor_of, Some((Owner::New, 1))];
         push_piece(pieces, [cursor, w.b1.clone()], Owner::New, end_of);
     }

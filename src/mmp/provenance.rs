@@ -17,6 +17,7 @@ use super::paths::Path;
 use super::planar::Planar;
 use super::strips::Strip;
 use crate::scalar::{Scalar, SourceDistance};
+use std::cmp::Ordering;
 
 /// A vertex on the ray through a wedge's range end from the wedge's pseudo-source: the end lies
 /// on that vertex's shadow line.
@@ -114,6 +115,15 @@ impl<S: Scalar> Provenance<S> {
         S::kept(&self.image).filter(|i| i.region == region)
     }
 
+    /// Whether range end `i` of this wedge and range end `j` of `other`'s, on the same edge,
+    /// are one point by their strips (see `strips.rs`): known without comparing the values.
+    pub(crate) fn same_end(&self, i: usize, other: &Provenance<S>, j: usize) -> bool {
+        match (S::kept(&self.strip), S::kept(&other.strip)) {
+            (Some(a), Some(b)) => a.same_end(i, &b, j),
+            _ => false,
+        }
+    }
+
     /// The anchor of range end `i` (0: `b0`, 1: `b1`), if kept.
     pub(crate) fn anchor(&self, i: usize) -> Option<Anchor<S>> {
         S::kept(&self.anchors[i])
@@ -198,4 +208,17 @@ impl<S: Scalar> Provenance<S> {
 /// Whether the number type keeps values ([`Scalar::Kept`]), and wedges their provenance.
 pub(crate) fn keeps_values<S: Scalar>() -> bool {
     S::kept(&S::keep(|| ())).is_some()
+}
+
+/// The order of two range ends on one edge (`(value, provenance, which end)`): equal where
+/// their strips name them alike, else the backend's comparison of the values.
+pub(crate) fn compare_ends<S: Scalar>(
+    (a, ka, i): (&S, &Provenance<S>, usize),
+    (b, kb, j): (&S, &Provenance<S>, usize),
+) -> Ordering {
+    if ka.same_end(i, kb, j) {
+        Ordering::Equal
+    } else {
+        a.compare(b)
+    }
 }

@@ -62,6 +62,15 @@ impl Strip {
         self
     }
 
+    /// Whether range end `i` of this strip's wedge and range end `j` of `other`'s, on the same
+    /// edge, are one point: both named, with equal keys read from the same end of the edge.
+    pub(crate) fn same_end(&self, i: usize, other: &Strip, j: usize) -> bool {
+        let (Some(mine), Some(theirs)) = (self.ends[i], other.ends[j]) else {
+            return false;
+        };
+        (0..2).any(|r| (0..2).any(|q| self.a[r] == other.a[q] && mine[r] == theirs[q]))
+    }
+
     /// Whether the strip is its own mirror image across the perpendicular bisector of its
     /// edge (read from either end of the edge, one shape): its image lies on the bisector.
     pub(crate) fn is_symmetric(&self) -> bool {

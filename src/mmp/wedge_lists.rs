@@ -7,7 +7,7 @@
 
 use super::edge_wedges::EdgeWedges;
 use super::intersect::{cut_into_pieces, Owner, Piece};
-use super::provenance::{keeps_values, Provenance};
+use super::provenance::{compare_ends, keeps_values, Provenance};
 use super::stats::Stats;
 use super::strips::OfferedWedges;
 use super::wedge::{PseudoSource, Wedge};
@@ -337,11 +337,15 @@ impl<S: Scalar> WedgeLists<S> {
             return;
         }
         let list = &self.lists[e.index()];
-        let first = list.partition_point(|x| x.b1.compare(&w.b0) != Ordering::Greater);
+        let first = list.partition_point(|x| {
+            compare_ends((&x.b1, &x.kept, 1), (&w.b0, &kept, 0)) != Ordering::Greater
+        });
         let end = first
             + list[first..]
                 .iter()
-                .take_while(|x| x.b0.compare(&w.b1) == Ordering::Less)
+                .take_while(|x| {
+                    compare_ends((&x.b0, &x.kept, 0), (&w.b1, &kept, 1)) == Ordering::Less
+                })
                 .count();
         let mut pieces = std::mem::take(&mut self.scratch.pieces);
         pieces.clear();
@@ -403,10 +407,11 @@ impl<S: Scalar> WedgeLists<S> {
         let anchored = |k: &Provenance<S>| {
             k.anchor(0).is_some() || k.anchor(1).is_some() || S::kept(&k.strip).is_some()
         };
-        let keeps = |[b0, b1]: [&S; 2], lo: &S, hi: &S| {
+        // `known`: where the pieces or the strips already say it (not compared then).
+        let keeps = |[b0, b1]: [&S; 2], lo: &S, hi: &S, known: [Option<bool>; 2]| {
             [
-                b0.compare(lo) == Ordering::Equal,
-                b1.compare(hi) == Ordering::Equal,
+                known[0].unwrap_or_else(|| b0.compare(lo) == Ordering::Equal),
+                known[1].unwrap_or_else(|| b1.compare(hi) == Ordering::Equal),
             ]
         };
         let mut midpoint = None;
@@ -452,6 +457,13 @@ impl<S: Scalar> WedgeLists<S> {
                 };
                 Some((strip?, j))
             });
+            // Whether each end of the piece is its owner's own range end: recorded by the
+            // intersection, or another wedge's end that the strips name as the owner's.
+            let own_end = [0, 1].map(|i| match (piece.end_of[i], &owner, &ended[i]) {
+                (Some((o, j)), _, _) if o == piece.owner && j == i => Some(true),
+                (_, Some(owner), Some((other, j))) if owner.same_end(i, other, *j) => Some(true),
+                _ => None,
+            });
             // The keys of the piece's ends: a crossing's, or another wedge's end's.
             let mut named_ends = |piece_kept: Provenance<S>| match (
                 strips.as_deref_mut(),
@@ -485,7 +497,7 @@ impl<S: Scalar> WedgeLists<S> {
                         arrivals.reach(v1, d, (w, kept));
                     }
                     let piece_kept = if anchored(kept) {
-                        kept.trimmed(keeps([&w.b0, &w.b1], &piece.lo, &piece.hi))
+                        kept.trimmed(keeps([&w.b0, &w.b1], &piece.lo, &piece.hi, own_end))
                     } else {
                         kept.clone()
                     }
@@ -500,7 +512,7 @@ impl<S: Scalar> WedgeLists<S> {
                 Owner::Old(k) => {
                     let k = k as usize;
                     let mut entry = list[first + k].clone();
-                    let kept_ends = keeps([&entry.b0, &entry.b1], &piece.lo, &piece.hi);
+                    let kept_ends = keeps([&entry.b0, &entry.b1], &piece.lo, &piece.hi, own_end);
                     if kept_ends != [true, true] {
                         entry.kept =
                             named_ends(entry.kept.trimmed(kept_ends).with_crossings(crossed));
