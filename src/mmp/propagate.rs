@@ -313,14 +313,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
     fn run(&mut self, progress: &mut impl FnMut(&Progress)) {
         let mut events = 0u64;
         while let Some(event) = self.front.pop() {
-            while let Some(c) = self.front.pop_closing(event.key) {
+            let key = event.key();
+            while let Some(c) = self.front.pop_closing(key) {
                 self.wedges
-                    .close(c.what, c.key, self.unfolding.length(c.what));
+                    .close(c.what, c.key(), self.unfolding.length(c.what));
             }
-            if event.key > self.max_distance {
+            if key > self.max_distance {
                 break;
             }
-            if self.stops_here(event.key) {
+            if self.stops_here(key) {
                 self.stats.stopped_at_stop_points = true;
                 break;
             }
@@ -329,13 +330,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 progress(&Progress {
                     vertices_reached: self.front.reached(),
                     vertex_count: self.mesh.vertex_count(),
-                    front: self.unfolding.to_model(event.key),
+                    front: self.unfolding.to_model(key),
                 });
             }
             match event.what {
                 EventKind::Wedge(at) => match self.wedges.due(
                     at,
-                    event.key,
+                    key,
                     self.unfolding.length(at.edge()),
                     &mut self.stats,
                 ) {
