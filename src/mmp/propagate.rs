@@ -824,7 +824,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let mut children: [Option<Child<S>>; 2] = [None, None];
         // An edge of length zero (coincident corners) carries no wedge; its face passes rays
         // on to its other edge unchanged.
-        if side0 == Ordering::Less && !self.unfolding.is_zero_length(near) {
+        if side0 == Ordering::Less && !layout.near_zero_length {
             let [at_first, at_apex_t] = layout.near_ends();
             let (t0, a0) = if at_v0 {
                 (at_first, None)
@@ -863,7 +863,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 .with_strip(strip_to(near, through));
             children[0] = Some((near, positions, at, kept));
         }
-        if side1 == Ordering::Greater && !self.unfolding.is_zero_length(far) {
+        if side1 == Ordering::Greater && !layout.far_zero_length {
             let [at_apex_u, at_second] = layout.far_ends();
             let (u0, a0) = if side0 == Ordering::Greater {
                 let a0 = anchor_on(far, 0, &to_far);
