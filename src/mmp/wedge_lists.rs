@@ -176,25 +176,18 @@ pub(crate) enum Due<S: Scalar> {
     Now(Wedge<S>, Provenance<S>),
 }
 
-/// The place of the wedge numbered `serial` in `list`, looking outwards from `place`: wedges
-/// inserted or removed before it since it was queued there moved it a little.
+/// The place of the wedge numbered `serial` in `list`, looking from `place` on, then back from
+/// it: wedges inserted before it since it was queued there moved it to the right, and wedges
+/// join a list far more often than they leave it (on the bunny, 990k events found their wedge
+/// to the right of its place and 2k to the left; a search outwards both ways at once took
+/// twice the probes, each a cache line).
 fn find_near<S: Scalar>(list: &[Entry<S>], place: usize, serial: u32) -> Option<usize> {
-    let (mut left, mut right) = (place.min(list.len()), place.min(list.len()));
-    while left > 0 || right < list.len() {
-        if right < list.len() {
-            if list[right].serial == serial {
-                return Some(right);
-            }
-            right += 1;
-        }
-        if left > 0 {
-            left -= 1;
-            if list[left].serial == serial {
-                return Some(left);
-            }
-        }
-    }
-    None
+    let (before, after) = list.split_at(place.min(list.len()));
+    after
+        .iter()
+        .position(|x| x.serial == serial)
+        .map(|i| before.len() + i)
+        .or_else(|| before.iter().rposition(|x| x.serial == serial))
 }
 
 /// The wedges of every edge of a running propagation.
