@@ -366,6 +366,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     }
 
     /// Whether every stop point is final with the front at `key`.
+    #[inline]
     fn stops_here(&mut self, key: f64) -> bool {
         let front = &self.front;
         self.stop.as_mut().is_some_and(|stop| {
@@ -670,6 +671,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
         });
         if w.source_y.sign() == Sign::Zero {
             return; // A wedge along its edge's line sees nothing beyond the line.
+        }
+        if let Some(side) = self.unfolding.only_other_side(self.mesh, w.edge, w.tau) {
+            self.propagate_into(w, kept, side);
+            return;
         }
         for side in self.mesh.sides(w.edge) {
             if side != w.tau {

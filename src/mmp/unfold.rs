@@ -184,6 +184,8 @@ pub(crate) struct FaceSide<S> {
     /// Whether the near (far) edge has length zero.
     near_zero_length: bool,
     far_zero_length: bool,
+    /// Whether the edge has more than two sides (more than two faces share it).
+    more_sides: bool,
 }
 
 /// The ends of `e` in the order of its frame.
@@ -370,6 +372,7 @@ impl<S: Scalar> Unfolding<S> {
                     far_from_end: (far_reversed && anchored[far]) || mirrored_far,
                     near_zero_length: zero_length[near],
                     far_zero_length: zero_length[far],
+                    more_sides: mesh.side_count(e) > 2,
                     wing,
                 });
             }
@@ -395,6 +398,23 @@ impl<S: Scalar> Unfolding<S> {
     #[inline]
     pub(crate) fn ends(&self, mesh: &TriMesh, e: EdgeId) -> [VertexId; 2] {
         frame_ends(mesh, &self.reversed, e)
+    }
+
+    /// The one side of `e` other than `tau` where the edge has two sides (all but edges shared
+    /// by more than two faces), whether or not a face lies there: told by that side's record
+    /// (an edge with an empty side has no more), so that a wedge crossing the edge does not
+    /// read the edge's count of sides from an array of its own, a cache miss at every wedge.
+    /// `None` where the edge may have more sides.
+    #[inline]
+    pub(crate) fn only_other_side(&self, mesh: &TriMesh, e: EdgeId, tau: Side) -> Option<Side> {
+        if tau.index() >= 2 {
+            return None;
+        }
+        let other = Side::from_index(1 - tau.index());
+        match &self.sides[mesh.side_slot(e, other)] {
+            Some(face) if face.more_sides => None,
+            _ => Some(other),
+        }
     }
 
     /// The position in the frame of `e` of the point at fraction `t` from its `vertices[0]`.
@@ -823,6 +843,11 @@ mod tests {
         assert_eq!(layout.ray_side(&s, layout.apex_x), Ordering::Equal);
         let three_quarters = unfolding.length(e).clone() * &S::from_f64(0.75);
         assert_eq!(layout.ray_side(&s, &three_quarters), Ordering::Greater);
+    }
+
+    #[test]
+    fn a_face_side_of_the_f64_engine_takes_one_cache_line() {
+        assert_eq!(std::mem::size_of::<Option<FaceSide<f64>>>(), 64);
     }
 
     #[test]
