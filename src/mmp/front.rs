@@ -247,3 +247,37 @@ impl<S: Scalar> Front<S> {
         vertices
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The heap's integer order is `f64::total_cmp` reversed (the nearest first), and the key
+    /// comes back bit for bit.
+    #[test]
+    fn keys_order_as_total_cmp_reversed_and_come_back_exactly() {
+        let keys = [
+            f64::NEG_INFINITY,
+            -2.5,
+            -f64::MIN_POSITIVE,
+            -0.0,
+            0.0,
+            5e-324,
+            1.0,
+            1.0 + f64::EPSILON,
+            f64::MAX,
+            f64::INFINITY,
+        ];
+        for a in keys {
+            let at = AtKey::new(a, ());
+            assert_eq!(at.key().to_bits(), a.to_bits());
+            for b in keys {
+                assert_eq!(
+                    at.cmp(&AtKey::new(b, ())),
+                    b.total_cmp(&a),
+                    "{a} against {b}"
+                );
+            }
+        }
+    }
+}
