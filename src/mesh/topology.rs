@@ -208,18 +208,27 @@ fn is_degenerate(p: [DVec3; 3]) -> bool {
     }
 }
 
-/// Compressed adjacency lists: `start[v]..start[v + 1]` indexes `list`.
-fn csr<T>(n: usize, pairs: impl Iterator<Item = (usize, T)>) -> (Vec<u32>, Vec<T>) {
-    let mut pairs: Vec<(usize, T)> = pairs.collect();
-    pairs.sort_by_key(|&(v, _)| v);
+/// Compressed adjacency lists: `start[v]..start[v + 1]` indexes `list`, each list in the
+/// order of `pairs`. A counting sort (linear, and stable as a sort of the pairs by `v` is).
+fn csr<T: Copy>(n: usize, pairs: impl Iterator<Item = (usize, T)> + Clone) -> (Vec<u32>, Vec<T>) {
     let mut start = vec![0u32; n + 1];
-    for &(v, _) in &pairs {
+    for (v, _) in pairs.clone() {
         start[v + 1] += 1;
     }
     for i in 0..n {
         start[i + 1] += start[i];
     }
-    (start, pairs.into_iter().map(|(_, t)| t).collect())
+    // Every slot is written below; the first pair's value only fills them until then.
+    let Some((_, filler)) = pairs.clone().next() else {
+        return (start, Vec::new());
+    };
+    let mut list = vec![filler; start[n] as usize];
+    let mut next = start.clone();
+    for (v, t) in pairs {
+        list[next[v] as usize] = t;
+        next[v] += 1;
+    }
+    (start, list)
 }
 
 struct UnionFind(Vec<u32>);

@@ -30,17 +30,47 @@ pub(crate) enum EventKind {
     Vertex(VertexId),
 }
 
-/// Something due when the front reaches `key`, ordered reversed, so that `BinaryHeap` pops the
+/// Something due when the front reaches a key, ordered reversed, so that `BinaryHeap` pops the
 /// nearest first (equal keys compare equal: the heap's own order decides between them).
+///
+/// The key is kept as the integer that orders as [`f64::total_cmp`] orders keys: the heap
+/// compares at every level of every pop, and an integer comparison is one instruction where
+/// `total_cmp` first maps both keys to such integers. The order, and with it the order in
+/// which events of equal keys leave the heap, is the same.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct AtKey<T> {
-    pub(crate) key: f64,
+    order: i64,
     pub(crate) what: T,
+}
+
+/// The integer of `key`'s bits that orders as `f64::total_cmp` (the transformation std's
+/// `total_cmp` applies to both sides): negative keys have every bit but the sign flipped. It
+/// is its own inverse.
+#[inline(always)]
+fn total_order_bits(bits: i64) -> i64 {
+    bits ^ ((((bits >> 63) as u64) >> 1) as i64)
+}
+
+impl<T> AtKey<T> {
+    /// `what`, due at `key`.
+    #[inline(always)]
+    pub(crate) fn new(key: f64, what: T) -> Self {
+        AtKey {
+            order: total_order_bits(key.to_bits() as i64),
+            what,
+        }
+    }
+
+    /// The key it is due at.
+    #[inline(always)]
+    pub(crate) fn key(&self) -> f64 {
+        f64::from_bits(total_order_bits(self.order) as u64)
+    }
 }
 
 impl<T> PartialEq for AtKey<T> {
     fn eq(&self, other: &Self) -> bool {
-        self.cmp(other) == Ordering::Equal
+        self.order == other.order
     }
 }
 impl<T> Eq for AtKey<T> {}
@@ -50,8 +80,9 @@ impl<T> PartialOrd for AtKey<T> {
     }
 }
 impl<T> Ord for AtKey<T> {
+    #[inline(always)]
     fn cmp(&self, other: &Self) -> Ordering {
-        other.key.total_cmp(&self.key)
+        other.order.cmp(&self.order)
     }
 }
 
@@ -97,7 +128,7 @@ impl<S: Scalar> Front<S> {
 
     /// The next edge to close with the front at `key`: one asked for at `key` or before.
     pub(crate) fn pop_closing(&mut self, key: f64) -> Option<Closing> {
-        if self.closing.peek()?.key <= key {
+        if self.closing.peek()?.key() <= key {
             self.closing.pop()
         } else {
             None
@@ -106,22 +137,19 @@ impl<S: Scalar> Front<S> {
 
     /// Puts a popped event back into the queue at a later key.
     pub(crate) fn requeue(&mut self, event: Event, key: f64) {
-        self.queue.push(Event { key, ..event });
+        self.queue.push(Event::new(key, event.what));
     }
 
     /// Queues the wedge named `at` at the smallest distance it gives.
     pub(crate) fn push_wedge(&mut self, at: WedgeRef, wedge: &Wedge<S>) {
         let key = wedge.min_distance().to_f64();
-        self.queue.push(Event {
-            key,
-            what: EventKind::Wedge(at),
-        });
+        self.queue.push(Event::new(key, EventKind::Wedge(at)));
         self.peak_queue = self.peak_queue.max(self.queue.len());
     }
 
     /// Asks, once the front reaches `key`, whether the wedges of edge `e` are still needed.
     pub(crate) fn push_closing(&mut self, edge: EdgeId, key: f64) {
-        self.closing.push(Closing { key, what: edge });
+        self.closing.push(Closing::new(key, edge));
     }
 
     /// The longest the queue has been after a wedge joined it.
@@ -180,10 +208,7 @@ impl<S: Scalar> Front<S> {
         });
         if mesh.may_bend_geodesics(v) {
             self.pending_emission[v.index()] = true;
-            self.queue.push(Event {
-                key: approx,
-                what: EventKind::Vertex(v),
-            });
+            self.queue.push(Event::new(approx, EventKind::Vertex(v)));
         }
         if let (Some(distance), Some(path)) = (twin_distance, twin_path) {
             for &e in mesh.vertex_edges(v) {
@@ -220,5 +245,39 @@ impl<S: Scalar> Front<S> {
             }
         }
         vertices
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The heap's integer order is `f64::total_cmp` reversed (the nearest first), and the key
+    /// comes back bit for bit.
+    #[test]
+    fn keys_order_as_total_cmp_reversed_and_come_back_exactly() {
+        let keys = [
+            f64::NEG_INFINITY,
+            -2.5,
+            -f64::MIN_POSITIVE,
+            -0.0,
+            0.0,
+            5e-324,
+            1.0,
+            1.0 + f64::EPSILON,
+            f64::MAX,
+            f64::INFINITY,
+        ];
+        for a in keys {
+            let at = AtKey::new(a, ());
+            assert_eq!(at.key().to_bits(), a.to_bits());
+            for b in keys {
+                assert_eq!(
+                    at.cmp(&AtKey::new(b, ())),
+                    b.total_cmp(&a),
+                    "{a} against {b}"
+                );
+            }
+        }
     }
 }

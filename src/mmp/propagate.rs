@@ -313,14 +313,15 @@ impl<'m, S: Scalar> Engine<'m, S> {
     fn run(&mut self, progress: &mut impl FnMut(&Progress)) {
         let mut events = 0u64;
         while let Some(event) = self.front.pop() {
-            while let Some(c) = self.front.pop_closing(event.key) {
+            let key = event.key();
+            while let Some(c) = self.front.pop_closing(key) {
                 self.wedges
-                    .close(c.what, c.key, self.unfolding.length(c.what));
+                    .close(c.what, c.key(), self.unfolding.length(c.what));
             }
-            if event.key > self.max_distance {
+            if key > self.max_distance {
                 break;
             }
-            if self.stops_here(event.key) {
+            if self.stops_here(key) {
                 self.stats.stopped_at_stop_points = true;
                 break;
             }
@@ -329,13 +330,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 progress(&Progress {
                     vertices_reached: self.front.reached(),
                     vertex_count: self.mesh.vertex_count(),
-                    front: self.unfolding.to_model(event.key),
+                    front: self.unfolding.to_model(key),
                 });
             }
             match event.what {
                 EventKind::Wedge(at) => match self.wedges.due(
                     at,
-                    event.key,
+                    key,
                     self.unfolding.length(at.edge()),
                     &mut self.stats,
                 ) {
@@ -365,6 +366,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     }
 
     /// Whether every stop point is final with the front at `key`.
+    #[inline]
     fn stops_here(&mut self, key: f64) -> bool {
         let front = &self.front;
         self.stop.as_mut().is_some_and(|stop| {
@@ -670,6 +672,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
         if w.source_y.sign() == Sign::Zero {
             return; // A wedge along its edge's line sees nothing beyond the line.
         }
+        if let Some(side) = self.unfolding.only_other_side(self.mesh, w.edge, w.tau) {
+            self.propagate_into(w, kept, side);
+            return;
+        }
         for side in self.mesh.sides(w.edge) {
             if side != w.tau {
                 self.propagate_into(w, kept, side);
@@ -839,7 +845,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let mut children: [Option<Child<S>>; 2] = [None, None];
         // An edge of length zero (coincident corners) carries no wedge; its face passes rays
         // on to its other edge unchanged.
-        if side0 == Ordering::Less && !self.unfolding.is_zero_length(near) {
+        if side0 == Ordering::Less && !layout.near_zero_length {
             let [at_first, at_apex_t] = layout.near_ends();
             let (t0, a0) = if at_v0 {
                 (at_first, None)
@@ -878,7 +884,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 .with_strip(strip_to(near, through));
             children[0] = Some((near, positions, at, kept));
         }
-        if side1 == Ordering::Greater && !self.unfolding.is_zero_length(far) {
+        if side1 == Ordering::Greater && !layout.far_zero_length {
             let [at_apex_u, at_second] = layout.far_ends();
             let (u0, a0) = if side0 == Ordering::Greater {
                 let a0 = anchor_on(far, 0, &to_far);

@@ -34,19 +34,13 @@ pub(crate) struct Unfolding<S> {
     zero_length: Vec<bool>,
     /// Whether a vertex ends an edge of length zero (has a twin at its place).
     has_twin: Vec<bool>,
-    /// The apex of the face on each side of each edge, at the side's [`TriMesh::side_slot`].
-    apex: Vec<Option<Apex<S>>>,
+    /// The face on each side of each edge as a wedge crossing it reads it, at the side's
+    /// [`TriMesh::side_slot`].
+    sides: Vec<Option<FaceSide<S>>>,
     /// Whether the edge's frame starts at its `vertices[1]` (see the module docs).
     reversed: Vec<bool>,
-    /// Whether the edge is long beside its nearer end's distance from the sources (its frame
-    /// starting at that end): points on it are then computed from that end ([`FaceLayout`]).
-    anchored: Vec<bool>,
     /// The flat regions, for number types that keep values (see `flat_region.rs`).
     flat: Option<FlatRegions<S>>,
-    /// Whether the points of every face's far edge are computed from its far end, as the
-    /// mirror image of the near edge's ([`FaceLayout::far_from_end`]): for number types that
-    /// keep values.
-    mirrored_far: bool,
     /// The mesh's unit scale.
     scale: f64,
 }
@@ -168,6 +162,32 @@ impl<S: Scalar> Apex<S> {
     }
 }
 
+/// The face on one side of an edge, as the propagation of a wedge across it reads it
+/// ([`FaceLayout`]): everything in one record, where it was read from a dozen arrays indexed by
+/// the edge and by the face's two other edges (a cache miss each, at every wedge). One cache
+/// line in the `f64` engine.
+#[derive(Clone, Debug)]
+#[repr(align(64))]
+pub(crate) struct FaceSide<S> {
+    /// The face and its other edges, in the order of the edge's frame.
+    wing: Wing,
+    /// The apex in the edge's frame.
+    apex: Apex<S>,
+    /// Lengths of the near and far edges.
+    near_length: S,
+    far_length: S,
+    /// See [`FaceLayout::near_reversed`] and the three fields after it.
+    near_reversed: bool,
+    far_reversed: bool,
+    near_from_apex: bool,
+    far_from_end: bool,
+    /// Whether the near (far) edge has length zero.
+    near_zero_length: bool,
+    far_zero_length: bool,
+    /// Whether the edge has more than two sides (more than two faces share it).
+    more_sides: bool,
+}
+
 /// The ends of `e` in the order of its frame.
 #[inline]
 fn frame_ends(mesh: &TriMesh, reversed: &[bool], e: EdgeId) -> [VertexId; 2] {
@@ -285,7 +305,7 @@ impl<S: Scalar> Unfolding<S> {
         };
         let mut edge_length = Vec::with_capacity(edge_count);
         let mut zero_length = Vec::with_capacity(edge_count);
-        let mut apex = vec![None; mesh.side_slot_count()];
+        let mut apex: Vec<Option<Apex<S>>> = vec![None; mesh.side_slot_count()];
         let mut has_twin = vec![false; mesh.vertex_count()];
         let flat = S::kept(&S::keep(|| {
             let points: Vec<[S; 3]> = (0..mesh.vertex_count())
@@ -325,14 +345,44 @@ impl<S: Scalar> Unfolding<S> {
                 };
             }
         }
+        // Whether the points of every face's far edge are computed from its far end, as the
+        // mirror image of the near edge's ([`FaceLayout::far_from_end`]): for number types
+        // that keep values.
+        let mirrored_far = flat.is_some();
+        let mut sides: Vec<Option<FaceSide<S>>> = vec![None; mesh.side_slot_count()];
+        for i in 0..edge_count {
+            let e = EdgeId(i as u32);
+            for side in mesh.sides(e) {
+                let slot = mesh.side_slot(e, side);
+                let (Some(wing), Some(apex)) =
+                    (frame_wing(mesh, &reversed, e, side), apex[slot].take())
+                else {
+                    continue;
+                };
+                let (near, far) = (wing.near.index(), wing.far.index());
+                let near_reversed = frame_ends(mesh, &reversed, wing.near)[0] == wing.apex;
+                let far_reversed = frame_ends(mesh, &reversed, wing.far)[0] != wing.apex;
+                sides[slot] = Some(FaceSide {
+                    apex,
+                    near_length: edge_length[near].clone(),
+                    far_length: edge_length[far].clone(),
+                    near_reversed,
+                    far_reversed,
+                    near_from_apex: near_reversed && anchored[near],
+                    far_from_end: (far_reversed && anchored[far]) || mirrored_far,
+                    near_zero_length: zero_length[near],
+                    far_zero_length: zero_length[far],
+                    more_sides: mesh.side_count(e) > 2,
+                    wing,
+                });
+            }
+        }
         Unfolding {
             edge_length,
             zero_length,
             has_twin,
-            apex,
+            sides,
             reversed,
-            anchored,
-            mirrored_far: flat.is_some(),
             flat,
             scale: mesh.unit_scale(),
         }
@@ -350,11 +400,21 @@ impl<S: Scalar> Unfolding<S> {
         frame_ends(mesh, &self.reversed, e)
     }
 
-    /// The face on `side` of `e` seen from the edge in the order of its frame: `near` joins
-    /// the frame's first end to the apex, `far` the apex to its second.
+    /// The one side of `e` other than `tau` where the edge has two sides (all but edges shared
+    /// by more than two faces), whether or not a face lies there: told by that side's record
+    /// (an edge with an empty side has no more), so that a wedge crossing the edge does not
+    /// read the edge's count of sides from an array of its own, a cache miss at every wedge.
+    /// `None` where the edge may have more sides.
     #[inline]
-    pub(crate) fn wing(&self, mesh: &TriMesh, e: EdgeId, side: Side) -> Option<Wing> {
-        frame_wing(mesh, &self.reversed, e, side)
+    pub(crate) fn only_other_side(&self, mesh: &TriMesh, e: EdgeId, tau: Side) -> Option<Side> {
+        if tau.index() >= 2 {
+            return None;
+        }
+        let other = Side::from_index(1 - tau.index());
+        match &self.sides[mesh.side_slot(e, other)] {
+            Some(face) if face.more_sides => None,
+            _ => Some(other),
+        }
     }
 
     /// The position in the frame of `e` of the point at fraction `t` from its `vertices[0]`.
@@ -425,7 +485,9 @@ impl<S: Scalar> Unfolding<S> {
     /// length zero).
     #[inline]
     pub(crate) fn apex(&self, mesh: &TriMesh, e: EdgeId, side: Side) -> Option<&Apex<S>> {
-        self.apex[mesh.side_slot(e, side)].as_ref()
+        self.sides[mesh.side_slot(e, side)]
+            .as_ref()
+            .map(|s| &s.apex)
     }
 
     /// The apex of the face on `side` of `e` as a point of the edge's frame, below the line
@@ -531,7 +593,7 @@ pub(crate) struct FaceLayout<'a, S> {
     pub far_reversed: bool,
     /// Whether points of the near edge are computed from the apex (its frame's first end) rather
     /// than from the edge's first end: where the near edge is long beside the apex's distance
-    /// from the sources (see `Unfolding::anchored`), so that a point near the apex is not the
+    /// from the sources (see `frames_near_sources`), so that a point near the apex is not the
     /// small difference of two lengths of the near edge.
     pub near_from_apex: bool,
     /// Likewise, whether points of the far edge are computed from the edge's second end rather
@@ -539,6 +601,10 @@ pub(crate) struct FaceLayout<'a, S> {
     /// frame, so that the far edge's points are the mirror image of the near edge's (measured
     /// from the edge's first end) and the mirror images of a wedge build one expression.
     pub far_from_end: bool,
+    /// Whether the near edge has length zero (its ends coincide: it carries no wedge).
+    pub near_zero_length: bool,
+    /// Whether the far edge has length zero.
+    pub far_zero_length: bool,
 }
 
 impl<'a, S: Scalar> FaceLayout<'a, S> {
@@ -550,23 +616,21 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         e: EdgeId,
         side: Side,
     ) -> Option<Self> {
-        let wing = unfolding.wing(mesh, e, side)?;
-        let apex = unfolding.apex(mesh, e, side)?;
-        let near_reversed = unfolding.ends(mesh, wing.near)[0] == wing.apex;
-        let far_reversed = unfolding.ends(mesh, wing.far)[0] != wing.apex;
+        let face = unfolding.sides[mesh.side_slot(e, side)].as_ref()?;
         Some(FaceLayout {
+            wing: face.wing.clone(),
             length: unfolding.length(e),
-            apex_x: &apex.x,
-            apex_far_x: &apex.far_x,
-            apex_h: &apex.h,
-            near_length: unfolding.length(wing.near),
-            far_length: unfolding.length(wing.far),
-            near_reversed,
-            far_reversed,
-            near_from_apex: near_reversed && unfolding.anchored[wing.near.index()],
-            far_from_end: (far_reversed && unfolding.anchored[wing.far.index()])
-                || unfolding.mirrored_far,
-            wing,
+            apex_x: &face.apex.x,
+            apex_far_x: &face.apex.far_x,
+            apex_h: &face.apex.h,
+            near_length: &face.near_length,
+            far_length: &face.far_length,
+            near_reversed: face.near_reversed,
+            far_reversed: face.far_reversed,
+            near_from_apex: face.near_from_apex,
+            far_from_end: face.far_from_end,
+            near_zero_length: face.near_zero_length,
+            far_zero_length: face.far_zero_length,
         })
     }
 
@@ -779,6 +843,11 @@ mod tests {
         assert_eq!(layout.ray_side(&s, layout.apex_x), Ordering::Equal);
         let three_quarters = unfolding.length(e).clone() * &S::from_f64(0.75);
         assert_eq!(layout.ray_side(&s, &three_quarters), Ordering::Greater);
+    }
+
+    #[test]
+    fn a_face_side_of_the_f64_engine_takes_one_cache_line() {
+        assert_eq!(std::mem::size_of::<Option<FaceSide<f64>>>(), 64);
     }
 
     #[test]
