@@ -246,20 +246,29 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
     let mine = w.distance_function();
     let mut cursor = w.b0.clone();
     let mut cursor_of = Some((Owner::New, 0));
-    // The provenance of the wedge whose own range end the cursor is, and which end.
-    let mut cursor_kept = Some((my_kept, 0));
+    // The range end of a wedge that the cursor is, if it is one.
+    let my_image = [&w.source_x, &w.source_y];
+    let mut cursor_end = Some((&w.b0, my_kept, 0, my_image));
     let vertices = [S::zero(), length.clone()];
     // Range ends compared where the strips do not name them alike.
-    let order = |a: (&S, Option<(&Provenance<S>, usize)>), b: (&S, &Provenance<S>, usize)| match a {
-        (value, Some((kept, i))) => compare_ends((value, kept, i), b),
-        (value, None) => value.compare(b.0),
-    };
     for (id, old, old_kept) in overlapping {
+        let old_image = [&old.source_x, &old.source_y];
         let (c0, c1) = (
-            compare_ends((&old.b0, old_kept, 0), (&w.b0, my_kept, 0)),
-            compare_ends((&old.b1, old_kept, 1), (&w.b1, my_kept, 1)),
+            compare_ends(
+                (&old.b0, old_kept, 0, old_image),
+                (&w.b0, my_kept, 0, my_image),
+            ),
+            compare_ends(
+                (&old.b1, old_kept, 1, old_image),
+                (&w.b1, my_kept, 1, my_image),
+            ),
         );
-        if order((&cursor, cursor_kept), (&old.b0, old_kept, 0)) == Ordering::Less {
+        let old_b0 = (&old.b0, old_kept, 0, old_image);
+        let before_old = match cursor_end {
+            Some(end) => compare_ends(end, old_b0),
+            None => cursor.compare(&old.b0),
+        };
+        if before_old == Ordering::Less {
             let range = [cursor.clone(), old.b0.clone()];
             push_piece(
                 pieces,
@@ -355,14 +364,19 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
             push_piece(pieces, range, Owner::Old(id), end_of);
         }
         cursor_of = end_of[1];
-        cursor_kept = if owns[1][0] {
-            Some((old_kept, 1))
+        cursor_end = if owns[1][0] {
+            Some((&old.b1, old_kept, 1, old_image))
         } else {
-            owns[1][1].then_some((my_kept, 1))
+            owns[1][1].then_some((&w.b1, my_kept, 1, my_image))
         };
         cursor = hi;
     }
-    if order((&cursor, cursor_kept), (&w.b1, my_kept, 1)) == Ordering::Less {
+    let my_b1 = (&w.b1, my_kept, 1, my_image);
+    let before_end = match cursor_end {
+        Some(end) => compare_ends(end, my_b1),
+        None => cursor.compare(&w.b1),
+    };
+    if before_end == Ordering::Less {
         let end_of = [cursor_of, Some((Owner::New, 1))];
         push_piece(pieces, [cursor, w.b1.clone()], Owner::New, end_of);
     }

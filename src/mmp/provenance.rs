@@ -210,15 +210,78 @@ pub(crate) fn keeps_values<S: Scalar>() -> bool {
     S::kept(&S::keep(|| ())).is_some()
 }
 
-/// The order of two range ends on one edge (`(value, provenance, which end)`): equal where
-/// their strips name them alike, else the backend's comparison of the values.
+/// A range end of a wedge as [`compare_ends`] sees it: its value, what the wedge keeps, which
+/// end (0: `b0`, 1: `b1`), and the wedge's image.
+pub(crate) type RangeEnd<'a, S> = (&'a S, &'a Provenance<S>, usize, [&'a S; 2]);
+
+/// The order of two range ends on one edge: equal where their strips name them alike, or
+/// where both lie on the shadow line of one anchor from one image (the ray from the image
+/// through the anchor meets the edge once); else the backend's comparison of the values.
 pub(crate) fn compare_ends<S: Scalar>(
-    (a, ka, i): (&S, &Provenance<S>, usize),
-    (b, kb, j): (&S, &Provenance<S>, usize),
+    (a, ka, i, sa): RangeEnd<'_, S>,
+    (b, kb, j, sb): RangeEnd<'_, S>,
 ) -> Ordering {
-    if ka.same_end(i, kb, j) {
+    let one_shadow = || match (ka.anchor(i), kb.anchor(j)) {
+        (Some(p), Some(q)) => {
+            S::proved_same_point([&p.point.x, &p.point.y], [&q.point.x, &q.point.y])
+                && S::proved_same_point(sa, sb)
+        }
+        _ => false,
+    };
+    if ka.same_end(i, kb, j) || one_shadow() {
         Ordering::Equal
     } else {
         a.compare(b)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::{Field, Real};
+
+    fn real(n: i64) -> Real {
+        Real::from_integer(n)
+    }
+
+    /// A range end on the shadow line of an anchor, from an image.
+    fn anchored(anchor: [Real; 2]) -> Provenance<Real> {
+        let [x, y] = anchor;
+        let anchor = Anchor {
+            point: Planar { x, y },
+            distance: real(1),
+            image: None,
+        };
+        Provenance::new([None, None], [None, Some(anchor)])
+    }
+
+    /// Two ends on the shadow line of one anchor from one image are one point, by structure
+    /// (the anchor's and the image's values handed on from one construction, as the engine
+    /// hands them to the wedges it cuts): their values are not compared, so values that only
+    /// an unbounded refinement could tell equal are never asked. Another anchor, or another
+    /// image, leaves the comparison to the values.
+    #[test]
+    fn ends_on_one_shadow_line_are_equal_without_comparing_their_values() {
+        let root = real(2).sqrt();
+        let image = [real(3), root.clone() + &real(1)];
+        let same_image = image.clone();
+        let vertex = [real(1), root.clone() / &real(4)];
+        let a = anchored(vertex.clone());
+        let b = anchored(vertex);
+        let (lo, hi) = (real(1), real(2));
+        let order = |kb: &Provenance<Real>, image_b: [&Real; 2]| {
+            compare_ends((&lo, &a, 1, [&image[0], &image[1]]), (&hi, kb, 1, image_b))
+        };
+        assert_eq!(order(&b, [&same_image[0], &same_image[1]]), Ordering::Equal);
+        let elsewhere = anchored([real(1), root / &real(5)]);
+        assert_eq!(
+            order(&elsewhere, [&same_image[0], &same_image[1]]),
+            Ordering::Less
+        );
+        let other_image = [real(3), real(2)];
+        assert_eq!(
+            order(&b, [&other_image[0], &other_image[1]]),
+            Ordering::Less
+        );
     }
 }

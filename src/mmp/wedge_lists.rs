@@ -7,7 +7,7 @@
 
 use super::edge_wedges::EdgeWedges;
 use super::intersect::{cut_into_pieces, Owner, Piece};
-use super::provenance::{compare_ends, keeps_values, Provenance};
+use super::provenance::{compare_ends, keeps_values, Provenance, RangeEnd};
 use super::stats::Stats;
 use super::strips::OfferedWedges;
 use super::wedge::{PseudoSource, Wedge};
@@ -38,6 +38,12 @@ struct Entry<S: Scalar> {
 }
 
 impl<S: Scalar> Entry<S> {
+    /// Range end `i` (0: `b0`, 1: `b1`) as [`compare_ends`] sees it.
+    fn range_end(&self, i: usize) -> RangeEnd<'_, S> {
+        let value = if i == 0 { &self.b0 } else { &self.b1 };
+        (value, &self.kept, i, [&self.source_x, &self.source_y])
+    }
+
     /// A wedge waiting in the queue under `serial`.
     fn new(w: Wedge<S>, kept: Provenance<S>, serial: u32) -> Self {
         Entry {
@@ -339,14 +345,15 @@ impl<S: Scalar> WedgeLists<S> {
             return;
         }
         let list = &self.lists[e.index()];
+        let image = [&w.source_x, &w.source_y];
         let first = list.partition_point(|x| {
-            compare_ends((&x.b1, &x.kept, 1), (&w.b0, &kept, 0)) != Ordering::Greater
+            compare_ends(x.range_end(1), (&w.b0, &kept, 0, image)) != Ordering::Greater
         });
         let end = first
             + list[first..]
                 .iter()
                 .take_while(|x| {
-                    compare_ends((&x.b0, &x.kept, 0), (&w.b1, &kept, 1)) == Ordering::Less
+                    compare_ends(x.range_end(0), (&w.b1, &kept, 1, image)) == Ordering::Less
                 })
                 .count();
         let mut pieces = std::mem::take(&mut self.scratch.pieces);

@@ -228,6 +228,12 @@ pub trait Scalar: Field {
         false
     }
 
+    /// Whether two points of a plane are proved one, as
+    /// [`Scalar::proved_same_distance_function`]: `false` for number types that keep no values.
+    fn proved_same_point(_p: [&Self; 2], _q: [&Self; 2]) -> bool {
+        false
+    }
+
     /// Roots of eq. (2) [LZT §2] that solve eq. (1), strictly inside `(lo, hi)`, in increasing
     /// order; by Property 1 there are none, one, two or infinitely many. The roots of
     /// [`Scalar::bisector`] without the ends' values.

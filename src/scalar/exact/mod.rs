@@ -608,6 +608,11 @@ impl Scalar for Real {
         roots::same_distance_function_by(a, b, <Real as CertifiedSign>::clear_sign) == Some(true)
     }
 
+    /// By signs settled without refinement, as `proved_same_distance_function`.
+    fn proved_same_point(p: [&Self; 2], q: [&Self; 2]) -> bool {
+        (0..2).all(|i| (p[i].clone() - q[i]).clear_sign() == Some(Sign::Zero))
+    }
+
     /// Certified, as [`Scalar::same_distance_function`]: in a flat region the image is one
     /// expression however it crossed the region (see `mmp/flat_region.rs`).
     fn same_image(a: &SourceDistance<Self>, b: &SourceDistance<Self>, scale: &Self) -> bool {
