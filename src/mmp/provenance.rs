@@ -214,13 +214,13 @@ pub(crate) fn keeps_values<S: Scalar>() -> bool {
 /// end (0: `b0`, 1: `b1`), and the wedge's image.
 pub(crate) type RangeEnd<'a, S> = (&'a S, &'a Provenance<S>, usize, [&'a S; 2]);
 
-/// The order of two range ends on one edge: equal where their strips name them alike, or
-/// where both lie on the shadow line of one anchor from one image (the ray from the image
-/// through the anchor meets the edge once); else the backend's comparison of the values.
-pub(crate) fn compare_ends<S: Scalar>(
-    (a, ka, i, sa): RangeEnd<'_, S>,
-    (b, kb, j, sb): RangeEnd<'_, S>,
-) -> Ordering {
+/// Whether two range ends on one edge are one point by structure: their strips name them
+/// alike, or both lie on the shadow line of one anchor from one image (the ray from the image
+/// through the anchor meets the edge once). `false` says nothing.
+pub(crate) fn one_end<S: Scalar>(
+    (_, ka, i, sa): RangeEnd<'_, S>,
+    (_, kb, j, sb): RangeEnd<'_, S>,
+) -> bool {
     let one_shadow = || match (ka.anchor(i), kb.anchor(j)) {
         (Some(p), Some(q)) => {
             S::proved_same_point([&p.point.x, &p.point.y], [&q.point.x, &q.point.y])
@@ -228,10 +228,16 @@ pub(crate) fn compare_ends<S: Scalar>(
         }
         _ => false,
     };
-    if ka.same_end(i, kb, j) || one_shadow() {
+    ka.same_end(i, kb, j) || one_shadow()
+}
+
+/// The order of two range ends on one edge: equal where they are one point by structure
+/// ([`one_end`]), else the backend's comparison of the values.
+pub(crate) fn compare_ends<S: Scalar>(a: RangeEnd<'_, S>, b: RangeEnd<'_, S>) -> Ordering {
+    if one_end(a, b) {
         Ordering::Equal
     } else {
-        a.compare(b)
+        a.0.compare(b.0)
     }
 }
 

@@ -7,7 +7,7 @@
 
 use super::edge_wedges::EdgeWedges;
 use super::intersect::{cut_into_pieces, Owner, Piece};
-use super::provenance::{compare_ends, keeps_values, Provenance, RangeEnd};
+use super::provenance::{compare_ends, keeps_values, one_end, Provenance, RangeEnd};
 use super::stats::Stats;
 use super::strips::OfferedWedges;
 use super::wedge::{PseudoSource, Wedge};
@@ -75,7 +75,9 @@ impl<S: Scalar> Entry<S> {
     /// them), and the same distance function, as the backend decides it (eq. (2) with
     /// infinitely many solutions). Then the two are one wedge of one image of the
     /// pseudo-source, split only by the shadow line of a vertex whose faces lie in the plane
-    /// of the unfolding: in an exactly flat region, a wedge per vertex behind the edge.
+    /// of the unfolding: in an exactly flat region, a wedge per vertex behind the edge. Ends
+    /// that are one point by structure ([`one_end`]: both on that vertex's shadow line) meet
+    /// without comparing their values, which two chains of faces built apart.
     fn continued_by(&self, next: &Self, length: &S) -> bool {
         self.pseudo_source == next.pseudo_source
             && self.source == next.source
@@ -85,7 +87,8 @@ impl<S: Scalar> Entry<S> {
                 &next.distance_function(),
                 &(next.b1.clone() - &self.b0),
             )
-            && !S::has_extent(&self.b1, &next.b0, length)
+            && (one_end(self.range_end(1), next.range_end(0))
+                || !S::has_extent(&self.b1, &next.b0, length))
     }
 
     /// This wedge extended over `next`, which continues it ([`Entry::continued_by`]) and which
