@@ -11,7 +11,7 @@
 //! engine's edge lists ([`wedge_lists`](super::wedge_lists)) store the pieces as wedges.
 
 use super::planar::Planar;
-use super::provenance::{compare_ends, Anchor, Provenance};
+use super::provenance::{compare_ends, Anchor, Provenance, RangeEnd};
 use super::stats::{Eq2Counts, Eq2Decision};
 use super::wedge::{PseudoSource, Wedge};
 use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Lower, Scalar, SourceDistance};
@@ -232,6 +232,19 @@ fn crossed_at<S: Scalar>(
     })
 }
 
+/// The order of the cursor against a range end: by structure where the cursor is a wedge's own
+/// range end (`at`), else by the values.
+fn cursor_order<S: Scalar>(
+    cursor: &S,
+    at: Option<RangeEnd<'_, S>>,
+    end: RangeEnd<'_, S>,
+) -> Ordering {
+    match at {
+        Some(at) => compare_ends(at, end),
+        None => cursor.compare(end.0),
+    }
+}
+
 /// Cuts the union of the new wedge's range and the ranges of the wedges it overlaps (sorted,
 /// disjoint, each with an id and what it keeps of its construction) into pieces, each owned by
 /// the better wedge there.
@@ -264,11 +277,7 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
             ),
         );
         let old_b0 = (&old.b0, old_kept, 0, old_image);
-        let before_old = match cursor_end {
-            Some(end) => compare_ends(end, old_b0),
-            None => cursor.compare(&old.b0),
-        };
-        if before_old == Ordering::Less {
+        if cursor_order(&cursor, cursor_end, old_b0) == Ordering::Less {
             let range = [cursor.clone(), old.b0.clone()];
             push_piece(
                 pieces,
@@ -372,11 +381,7 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
         cursor = hi;
     }
     let my_b1 = (&w.b1, my_kept, 1, my_image);
-    let before_end = match cursor_end {
-        Some(end) => compare_ends(end, my_b1),
-        None => cursor.compare(&w.b1),
-    };
-    if before_end == Ordering::Less {
+    if cursor_order(&cursor, cursor_end, my_b1) == Ordering::Less {
         let end_of = [cursor_of, Some((Owner::New, 1))];
         push_piece(pieces, [cursor, w.b1.clone()], Owner::New, end_of);
     }
