@@ -263,7 +263,6 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
     let my_image = [&w.source_x, &w.source_y];
     let mut cursor_end = Some((&w.b0, my_kept, 0, my_image));
     let vertices = [S::zero(), length.clone()];
-    // Range ends compared where the strips do not name them alike.
     for (id, old, old_kept) in overlapping {
         let old_image = [&old.source_x, &old.source_y];
         let (c0, c1) = (
