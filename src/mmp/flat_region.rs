@@ -12,11 +12,16 @@
 //! Only number types that keep values ([`Scalar::Kept`]) use regions: floats lose nothing to
 //! the face-by-face expressions, and would lose accuracy in a frame far from the point at hand.
 
+use super::crease::{Crease, EdgeInRegion};
 use super::planar::Planar;
 use super::unfold::Apex;
 use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
 use crate::scalar::{Scalar, Sign};
 use std::collections::HashMap;
+
+/// The first edge (by id) between two regions, its faces in the region left and in the region
+/// entered, and the unfolding across it.
+type CreaseLine<S> = (EdgeId, [FaceId; 2], Crease<S>);
 
 /// A point in a region's frame.
 pub(crate) type RegionPoint<S> = [S; 2];
@@ -39,6 +44,9 @@ pub(crate) struct FlatRegions<S> {
     corners: HashMap<(u32, VertexId), RegionPoint<S>>,
     /// Whether each edge's frame runs from its `vertices[1]` (see `unfold.rs`).
     reversed: Vec<bool>,
+    /// The unfolding across each edge between two regions, by the edge and the region left,
+    /// where it is the one built for the pair of regions (see `crease.rs`).
+    creases: HashMap<(EdgeId, u32), Crease<S>>,
 }
 
 fn sub<S: Scalar>(p: &[S; 3], q: &[S; 3]) -> [S; 3] {
@@ -131,11 +139,69 @@ impl<S: Scalar> FlatRegions<S> {
                 }
             }
         }
-        FlatRegions {
+        let mut regions = FlatRegions {
             face_region,
             corners,
             reversed,
+            creases: HashMap::new(),
+        };
+        regions.creases = regions.creases(mesh, points);
+        regions
+    }
+
+    /// The unfolding across each edge between two regions that lies on the line of the first
+    /// such edge of the pair (by id) with the faces on the same sides of it: there, one map
+    /// built from that first edge (see `crease.rs`). Decided exactly on the input coordinates.
+    fn creases(&self, mesh: &TriMesh, points: &[[S; 3]]) -> HashMap<(EdgeId, u32), Crease<S>> {
+        let point = |v: VertexId| &points[v.index()];
+        let apex = |e: EdgeId, f: FaceId| {
+            let ends = mesh.edge(e).vertices;
+            let corner = mesh.face(f).into_iter().find(|v| !ends.contains(v));
+            point(corner.expect("a face has a corner off each of its edges"))
+        };
+        let mut first: HashMap<(u32, u32), CreaseLine<S>> = HashMap::new();
+        let mut creases = HashMap::new();
+        for e in 0..mesh.edge_count() {
+            let e = EdgeId(e as u32);
+            let faces: Vec<FaceId> = mesh.edge_faces(e).collect();
+            let &[f, g] = faces.as_slice() else { continue };
+            let (Some(rf), Some(rg)) = (self.region(f), self.region(g)) else {
+                continue;
+            };
+            if rf == rg {
+                continue;
+            }
+            for (left, entered, pair) in [(f, g, (rf, rg)), (g, f, (rg, rf))] {
+                let (e0, [l0, n0], crease) = first.entry(pair).or_insert_with(|| {
+                    let [a, b] = mesh.edge(e).vertices.map(point);
+                    let d = sub(b, a);
+                    let crease = Crease::new(
+                        self.edge_in(mesh, e, left),
+                        self.edge_in(mesh, e, entered),
+                        &dot(&d, &d),
+                    );
+                    (e, [left, entered], crease)
+                });
+                let [a, b] = mesh.edge(*e0).vertices.map(point);
+                let d = sub(b, a);
+                let on_line =
+                    |p: &[S; 3]| cross(&d, &sub(p, a)).iter().all(|c| c.sign() == Sign::Zero);
+                let same_side = |f0: FaceId, f1: FaceId| {
+                    let (n0, n1) = (
+                        cross(&d, &sub(apex(*e0, f0), a)),
+                        cross(&d, &sub(apex(e, f1), a)),
+                    );
+                    dot(&n0, &n1).sign() == Sign::Positive
+                };
+                let [p, q] = mesh.edge(e).vertices.map(point);
+                if *e0 == e
+                    || (on_line(p) && on_line(q) && same_side(*l0, left) && same_side(*n0, entered))
+                {
+                    creases.insert((e, pair.0), crease.clone());
+                }
+            }
         }
+        creases
     }
 
     /// The region of a face, if it has one.
@@ -152,7 +218,7 @@ impl<S: Scalar> FlatRegions<S> {
     /// ends in the order of the edge's frame, and `+1` or `-1` for the side of its line `f`
     /// lies on (`f` runs counterclockwise in the region's frame, so it lies left of the edge
     /// when the edge runs the way of `f`'s corners).
-    fn edge_in(&self, mesh: &TriMesh, e: EdgeId, f: FaceId) -> (&RegionPoint<S>, [S; 2], bool) {
+    fn edge_in(&self, mesh: &TriMesh, e: EdgeId, f: FaceId) -> EdgeInRegion<'_, S> {
         let region = self.face_region[f.index()].expect("a face of a region");
         let [first, second] = mesh.edge(e).vertices;
         let reversed = self.reversed[e.index()];
@@ -207,10 +273,34 @@ impl<S: Scalar> FlatRegions<S> {
         }
     }
 
+    /// The region point of a point entering face `f` across its edge `e` (of length `length`):
+    /// `at` in the edge's frame, `at.y` measured on the side away from `f` (where the
+    /// pseudo-sources of the wedges entering `f` across `e` lie), and `kept` the point in the
+    /// frame of the region it comes from, if it does. The same point wherever it comes from
+    /// in the region it is in, or across the line that region shares with `f`'s (see
+    /// `crease.rs`), gets one expression.
+    pub(crate) fn image_entering(
+        &self,
+        mesh: &TriMesh,
+        (e, f): (EdgeId, FaceId),
+        length: &S,
+        at: &Planar<S>,
+        kept: Option<&RegionImage<S>>,
+    ) -> RegionPoint<S> {
+        let region = self.face_region[f.index()].expect("a face of a region");
+        match kept {
+            Some(image) if image.region == region => image.point.clone(),
+            Some(image) => self.creases.get(&(e, image.region)).map_or_else(
+                || self.entering(mesh, (e, f), length, at),
+                |crease| crease.apply(&image.point),
+            ),
+            None => self.entering(mesh, (e, f), length, at),
+        }
+    }
+
     /// The region point of a point in the frame of edge `e` (of length `length`), `at.y`
-    /// measured on the side away from the region's face `f` (where the pseudo-sources of the
-    /// wedges entering `f` across `e` lie).
-    pub(crate) fn entering(
+    /// measured on the side away from the region's face `f`.
+    fn entering(
         &self,
         mesh: &TriMesh,
         (e, f): (EdgeId, FaceId),

@@ -4,6 +4,7 @@
 //! subdivision from which distances are read and paths traced back (Section 2).
 
 mod coverage;
+mod crease;
 mod edge_wedges;
 mod field;
 mod flat_region;

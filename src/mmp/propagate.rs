@@ -695,11 +695,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
         // In a flat region the image travels in the region's frame, one expression however it
         // crosses the region (see `flat_region.rs`); elsewhere from frame to frame.
         let flat = self.unfolding.flat_region(face);
-        let image = flat.map(|(regions, region)| {
-            kept.image_in(region).map_or_else(
-                || regions.entering(mesh, (w.edge, face), length, &s),
-                |i| i.point,
-            )
+        let image = flat.map(|(regions, _)| {
+            let kept = S::kept(&kept.image);
+            regions.image_entering(mesh, (w.edge, face), length, &s, kept.as_ref())
         });
         // The ray through a range end with an anchor starts at the anchor: the same line,
         // from the vertex whose wedges continue it on the other side (see `provenance.rs`).
@@ -784,10 +782,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
                         image: None,
                     });
                 };
-                let point = match &a.image {
-                    Some(i) if i.region == region => i.point.clone(),
-                    _ => regions.entering(mesh, (w.edge, face), length, &a.point),
-                };
+                let point = regions.image_entering(
+                    mesh,
+                    (w.edge, face),
+                    length,
+                    &a.point,
+                    a.image.as_ref(),
+                );
                 let image = RegionImage { region, point };
                 return Some(Anchor {
                     point: regions.to_edge(mesh, (g, face), self.unfolding.length(g), &image.point),

@@ -110,11 +110,6 @@ impl<S: Scalar> Provenance<S> {
         self
     }
 
-    /// The pseudo-source's image in region `region`'s frame, if kept there.
-    pub(crate) fn image_in(&self, region: u32) -> Option<RegionImage<S>> {
-        S::kept(&self.image).filter(|i| i.region == region)
-    }
-
     /// Whether range end `i` of this wedge and range end `j` of `other`'s, on the same edge,
     /// are one point by their strips (see `strips.rs`): known without comparing the values.
     pub(crate) fn same_end(&self, i: usize, other: &Provenance<S>, j: usize) -> bool {
