@@ -197,6 +197,7 @@ fn lower_by_anchor<S: Scalar>(
             },
             distance,
             image: None,
+            light: None,
         })
     };
     let anchored_below = |kept: &Provenance<S>, other: &Wedge<S>| {

@@ -9,7 +9,7 @@ use super::flat_region::RegionImage;
 use super::front::{EventKind, Front};
 use super::paths::{continued, CongruentPaths, Path};
 use super::planar::Planar;
-use super::provenance::{keeps_values, Anchor, Provenance};
+use super::provenance::{keeps_values, Anchor, Light, Provenance};
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::stop::StopPoints;
@@ -774,26 +774,28 @@ impl<'m, S: Scalar> Engine<'m, S> {
         // of the edge into the face (that vertex's shadow line), the vertex: the apex of the
         // face seen from `g`, the very image its own wedges across `g` start from.
         let anchor_on = |g: EdgeId, i: usize, to: &dyn Fn(&Planar<S>) -> Planar<S>| {
-            if let Some(a) = &anchors[i] {
+            // A point kept with the anchor, in `g`'s frame and the region's.
+            let carry = |point: &Planar<S>, image: Option<&RegionImage<S>>| {
                 let Some((regions, region)) = flat else {
-                    return Some(Anchor {
-                        point: to(&a.point),
-                        distance: a.distance.clone(),
-                        image: None,
-                    });
+                    return (to(point), None);
                 };
-                let point = regions.image_entering(
-                    mesh,
-                    (w.edge, face),
-                    length,
-                    &a.point,
-                    a.image.as_ref(),
-                );
+                let point = regions.image_entering(mesh, (w.edge, face), length, point, image);
                 let image = RegionImage { region, point };
+                let length_g = self.unfolding.length(g);
+                let at = regions.to_edge(mesh, (g, face), length_g, &image.point);
+                (at, Some(image))
+            };
+            if let Some(a) = &anchors[i] {
+                let (point, image) = carry(&a.point, a.image.as_ref());
+                let light = a.light.as_ref().map(|l| {
+                    let (point, image) = carry(&l.point, l.image.as_ref());
+                    Light { point, image }
+                });
                 return Some(Anchor {
-                    point: regions.to_edge(mesh, (g, face), self.unfolding.length(g), &image.point),
+                    point,
                     distance: a.distance.clone(),
-                    image: Some(image),
+                    image,
+                    light,
                 });
             }
             if !(if i == 0 { at_v0 } else { at_v1 }) {
@@ -810,6 +812,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 point,
                 distance,
                 image,
+                light: None,
             })
         };
         let (near, far) = (layout.wing.near, layout.wing.far);

@@ -29,6 +29,19 @@ pub(crate) struct Anchor<S> {
     pub(crate) distance: S,
     /// The vertex's image in the frame of the flat region the wedge lies in, if it does.
     pub(crate) image: Option<RegionImage<S>>,
+    /// The image whose shadow line through the vertex the end lies on, where it is not the
+    /// wedge's own: for a wedge of the vertex itself, cut where the wedges of that image end.
+    pub(crate) light: Option<Light<S>>,
+}
+
+/// An image that casts a shadow line through an anchor, kept as an anchor is: in the edge's
+/// frame and, in a flat region, in the region's frame.
+#[derive(Clone, Debug)]
+pub(crate) struct Light<S> {
+    /// The image in the edge's frame.
+    pub(crate) point: Planar<S>,
+    /// The image in the frame of the flat region the wedge lies in, if it does.
+    pub(crate) image: Option<RegionImage<S>>,
 }
 
 impl<S: Scalar> Anchor<S> {
@@ -64,6 +77,20 @@ pub(crate) struct Provenance<S: Scalar> {
     /// The strip the wedge is seen through, where the run knows wedges offered again (see
     /// `strips.rs`).
     pub(crate) strip: S::Kept<Strip>,
+    /// The shadow lines the range's ends `b0` and `b1` lie on where they are another wedge's
+    /// anchored ends but not on a ray of this wedge's: known on this edge only.
+    pub(crate) shadows: [S::Kept<ShadowLine<S>>; 2],
+}
+
+/// A shadow line, by the anchor it passes and the image that casts it, in an edge's frame.
+#[derive(Clone, Debug)]
+pub(crate) struct ShadowLine<S> {
+    /// The anchor.
+    pub(crate) anchor: Planar<S>,
+    /// The image.
+    pub(crate) light: Planar<S>,
+    /// The image in the frame of the flat region the wedge lies in, if it does.
+    pub(crate) light_image: Option<RegionImage<S>>,
 }
 
 impl<S: Scalar> Default for Provenance<S> {
@@ -75,6 +102,7 @@ impl<S: Scalar> Default for Provenance<S> {
             image: Default::default(),
             path: Default::default(),
             strip: Default::default(),
+            shadows: Default::default(),
         }
     }
 }
@@ -89,6 +117,7 @@ impl<S: Scalar> Provenance<S> {
             image: Default::default(),
             path: Default::default(),
             strip: Default::default(),
+            shadows: Default::default(),
         }
     }
 
@@ -124,6 +153,64 @@ impl<S: Scalar> Provenance<S> {
         S::kept(&self.anchors[i])
     }
 
+    /// The shadow line range end `i` lies on, if known: its anchor's, from the anchor's light
+    /// or the wedge's image `own`, or the line it keeps on this edge.
+    pub(crate) fn shadow_line(&self, i: usize, own: [&S; 2]) -> Option<ShadowLine<S>> {
+        let Some(a) = self.anchor(i) else {
+            return S::kept(&self.shadows[i]);
+        };
+        let (light, light_image) = match a.light {
+            Some(l) => (l.point, l.image),
+            None => {
+                let [x, y] = own.map(S::clone);
+                (Planar { x, y }, S::kept(&self.image))
+            }
+        };
+        Some(ShadowLine {
+            anchor: a.point,
+            light,
+            light_image,
+        })
+    }
+
+    /// The same provenance with range end `i` at another wedge's range end `theirs` on the
+    /// same edge: where that end lies on a shadow line, so does this one. Kept for this edge
+    /// only, or, for a wedge of the anchor's vertex itself (`own`: its image and distance,
+    /// where it is a vertex's wedge), whose rays leave the anchor, as an anchor lit by the
+    /// other's light and carried on with the wedge: the ends carried on from both wedges are
+    /// then one point by structure ([`one_end`]).
+    pub(crate) fn ending_on(
+        mut self,
+        i: usize,
+        (_, their_kept, j, theirs): RangeEnd<'_, S>,
+        own: Option<([&S; 2], &S)>,
+    ) -> Self {
+        if self.anchor(i).is_some() {
+            return self;
+        }
+        let Some(line) = their_kept.shadow_line(j, theirs) else {
+            return self;
+        };
+        match own {
+            Some((image, sigma))
+                if S::proved_same_point(image, [&line.anchor.x, &line.anchor.y]) =>
+            {
+                let anchor = Anchor {
+                    point: line.anchor,
+                    distance: sigma.clone(),
+                    image: S::kept(&self.image),
+                    light: Some(Light {
+                        point: line.light,
+                        image: line.light_image,
+                    }),
+                };
+                self.anchors[i] = S::keep(|| anchor);
+            }
+            _ => self.shadows[i] = S::keep(|| line),
+        }
+        self
+    }
+
     /// The distance function of the wedge whose crossing with this one is range end `i`, if
     /// kept.
     pub(crate) fn crossing(&self, i: usize) -> Option<SourceDistance<S>> {
@@ -151,6 +238,7 @@ impl<S: Scalar> Provenance<S> {
             // A trimmed end is a crossing or another wedge's end: the strip does not fix it.
             strip: S::kept(&self.strip)
                 .map_or_else(Default::default, |strip| S::keep(|| strip.trimmed(keep))),
+            shadows: kept_ends(&self.shadows, keep),
         }
     }
 
@@ -178,6 +266,8 @@ impl<S: Scalar> Provenance<S> {
         let [_, anchor_1] = next.anchors;
         let [crossing_0, _] = self.crossings;
         let [_, crossing_1] = next.crossings;
+        let [shadow_0, _] = self.shadows;
+        let [_, shadow_1] = next.shadows;
         let image = if S::kept(&self.image).is_some() {
             self.image
         } else {
@@ -196,6 +286,7 @@ impl<S: Scalar> Provenance<S> {
             path,
             // The joined range's ends come from two strips.
             strip: Default::default(),
+            shadows: [shadow_0, shadow_1],
         }
     }
 }
@@ -210,17 +301,15 @@ pub(crate) fn keeps_values<S: Scalar>() -> bool {
 pub(crate) type RangeEnd<'a, S> = (&'a S, &'a Provenance<S>, usize, [&'a S; 2]);
 
 /// Whether two range ends on one edge are one point by structure: their strips name them
-/// alike, or both lie on the shadow line of one anchor from one image (the ray from the image
-/// through the anchor meets the edge once). `false` says nothing.
+/// alike, or both lie on one shadow line, of one anchor from one image (the line meets the
+/// edge once). `false` says nothing.
 pub(crate) fn one_end<S: Scalar>(
     (_, ka, i, sa): RangeEnd<'_, S>,
     (_, kb, j, sb): RangeEnd<'_, S>,
 ) -> bool {
-    let one_shadow = || match (ka.anchor(i), kb.anchor(j)) {
-        (Some(p), Some(q)) => {
-            S::proved_same_point([&p.point.x, &p.point.y], [&q.point.x, &q.point.y])
-                && S::proved_same_point(sa, sb)
-        }
+    let same = |p: &Planar<S>, q: &Planar<S>| S::proved_same_point([&p.x, &p.y], [&q.x, &q.y]);
+    let one_shadow = || match (ka.shadow_line(i, sa), kb.shadow_line(j, sb)) {
+        (Some(p), Some(q)) => same(&p.anchor, &q.anchor) && same(&p.light, &q.light),
         _ => false,
     };
     ka.same_end(i, kb, j) || one_shadow()
@@ -252,6 +341,7 @@ mod tests {
             point: Planar { x, y },
             distance: real(1),
             image: None,
+            light: None,
         };
         Provenance::new([None, None], [None, Some(anchor)])
     }

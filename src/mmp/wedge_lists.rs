@@ -470,10 +470,20 @@ impl<S: Scalar> WedgeLists<S> {
                 Some((strip?, j))
             });
             // Whether each end of the piece is its owner's own range end: recorded by the
-            // intersection, or another wedge's end that the strips name as the owner's.
-            let own_end = [0, 1].map(|i| match (piece.end_of[i], &owner, &ended[i]) {
-                (Some((o, j)), _, _) if o == piece.owner && j == i => Some(true),
-                (_, Some(owner), Some((other, j))) if owner.same_end(i, other, *j) => Some(true),
+            // intersection, or another wedge's end that is one point with the owner's by
+            // structure ([`one_end`]).
+            let range_end = |o: Owner, i: usize| match o {
+                Owner::New => (
+                    if i == 0 { &w.b0 } else { &w.b1 },
+                    kept,
+                    i,
+                    [&w.source_x, &w.source_y],
+                ),
+                Owner::Old(k) => list[first + k as usize].range_end(i),
+            };
+            let own_end = [0, 1].map(|i| match piece.end_of[i] {
+                Some((o, j)) if o == piece.owner && j == i => Some(true),
+                Some((o, j)) if one_end(range_end(piece.owner, i), range_end(o, j)) => Some(true),
                 _ => None,
             });
             // The keys of the piece's ends: a crossing's, or another wedge's end's.
@@ -492,6 +502,20 @@ impl<S: Scalar> WedgeLists<S> {
                     piece_kept.with_strip(Some(strip))
                 }
                 _ => piece_kept,
+            };
+            // A piece that ends at another wedge's end on a shadow line lies on that line.
+            let lit_ends = |owner: &Wedge<S>, mut piece_kept: Provenance<S>| {
+                if !keeps_values {
+                    return piece_kept;
+                }
+                let own = matches!(owner.pseudo_source, PseudoSource::Vertex(_))
+                    .then(|| ([&owner.source_x, &owner.source_y], &owner.sigma));
+                for i in 0..2 {
+                    if let Some((other, j)) = piece.end_of[i].filter(|(o, _)| *o != piece.owner) {
+                        piece_kept = piece_kept.ending_on(i, range_end(other, j), own);
+                    }
+                }
+                piece_kept
             };
             let (entry, event) = match piece.owner {
                 Owner::New => {
@@ -514,7 +538,7 @@ impl<S: Scalar> WedgeLists<S> {
                         kept.clone()
                     }
                     .with_crossings(crossed);
-                    let piece_kept = named_ends(piece_kept);
+                    let piece_kept = lit_ends(w, named_ends(piece_kept));
                     let mut wedge = w.clone();
                     wedge.b0 = piece.lo;
                     wedge.b1 = piece.hi;
@@ -526,8 +550,9 @@ impl<S: Scalar> WedgeLists<S> {
                     let mut entry = list[first + k].clone();
                     let kept_ends = keeps([&entry.b0, &entry.b1], &piece.lo, &piece.hi, own_end);
                     if kept_ends != [true, true] {
-                        entry.kept =
+                        let trimmed =
                             named_ends(entry.kept.trimmed(kept_ends).with_crossings(crossed));
+                        entry.kept = lit_ends(&entry.wedge(e), trimmed);
                         entry.b0 = piece.lo;
                         entry.b1 = piece.hi;
                     }
