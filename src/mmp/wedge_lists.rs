@@ -10,7 +10,7 @@ use super::intersect::{cut_into_pieces, Owner, Piece};
 use super::provenance::{compare_ends, keeps_values, one_end, Provenance, RangeEnd};
 use super::stats::Stats;
 use super::strips::OfferedWedges;
-use super::wedge::{PseudoSource, Wedge};
+use super::wedge::{PseudoSource, Wedge, WedgeFields};
 use crate::mesh::{EdgeId, Side, SourceId, VertexId};
 use crate::scalar::{Scalar, Site, SourceDistance, FRONT_MARGIN};
 use std::cmp::Ordering;
@@ -58,15 +58,6 @@ impl<S: Scalar> Entry<S> {
             queued: true,
             serial,
             kept,
-        }
-    }
-
-    /// The distance function the wedge gives along its edge.
-    fn distance_function(&self) -> SourceDistance<S> {
-        SourceDistance {
-            x: self.source_x.clone(),
-            y: self.source_y.clone(),
-            sigma: self.sigma.clone(),
         }
     }
 
@@ -127,11 +118,36 @@ impl<S: Scalar> Entry<S> {
     }
 }
 
+impl<S: Scalar> WedgeFields<S> for Entry<S> {
+    #[inline(always)]
+    fn b0(&self) -> &S {
+        &self.b0
+    }
+    #[inline(always)]
+    fn b1(&self) -> &S {
+        &self.b1
+    }
+    #[inline(always)]
+    fn source_x(&self) -> &S {
+        &self.source_x
+    }
+    #[inline(always)]
+    fn source_y(&self) -> &S {
+        &self.source_y
+    }
+    #[inline(always)]
+    fn sigma(&self) -> &S {
+        &self.sigma
+    }
+    #[inline(always)]
+    fn pseudo_source(&self) -> PseudoSource {
+        self.pseudo_source
+    }
+}
+
 /// Reusable buffers of the intersection, kept across insertions to avoid allocating.
 struct Scratch<S: Scalar> {
     pieces: Vec<Piece<S>>,
-    /// The overlapped wedges, as wedges.
-    overlapped: Vec<Wedge<S>>,
     /// Whether a piece of each overlapped wedge took its serial (and so its queue event).
     named: Vec<bool>,
     /// The rebuilt stretch of the list, each entry with whether it needs a queue event.
@@ -142,7 +158,6 @@ impl<S: Scalar> Default for Scratch<S> {
     fn default() -> Self {
         Scratch {
             pieces: Vec::new(),
-            overlapped: Vec::new(),
             named: Vec::new(),
             fresh: Vec::new(),
         }
@@ -361,13 +376,9 @@ impl<S: Scalar> WedgeLists<S> {
                 .count();
         let mut pieces = std::mem::take(&mut self.scratch.pieces);
         pieces.clear();
-        let overlapped = &mut self.scratch.overlapped;
-        overlapped.clear();
-        overlapped.extend(list[first..end].iter().map(|x| x.wedge(e)));
         let log = self.record_decisions.then_some(&mut stats.decisions);
         // An overlapped wedge is named by its place among the overlapped ones.
-        let overlapping = (0..).zip(overlapped.iter().zip(&list[first..end]));
-        let overlapping = overlapping.map(|(k, (w, x))| (k, w, &x.kept));
+        let overlapping = (0..).zip(&list[first..end]).map(|(k, x)| (k, x, &x.kept));
         let new = (&w, &kept);
         cut_into_pieces(&mut stats.eq2, log, &mut pieces, overlapping, new, length);
         if pieces.iter().any(|p| p.owner == Owner::New) {
