@@ -437,6 +437,16 @@ impl<S: Scalar> WedgeLists<S> {
                 known[1].unwrap_or_else(|| b1.compare(hi) == Ordering::Equal),
             ]
         };
+        // The strip of the new wedge or of an overlapped one, looked up only by number types
+        // that keep values (for the others, not even the overlapped wedge is read).
+        let strip_of = |owner: Owner| {
+            keeps_values
+                .then(|| match owner {
+                    Owner::New => S::kept(&kept.strip),
+                    Owner::Old(k) => S::kept(&list[first + k as usize].kept.strip),
+                })
+                .flatten()
+        };
         let mut midpoint = None;
         for mut piece in pieces.drain(..) {
             // Kept only by number types that keep values: f64 builds none of it.
@@ -447,17 +457,11 @@ impl<S: Scalar> WedgeLists<S> {
                 })?
             });
             // The strips of the wedges whose crossings are the piece's ends.
-            let partners = piece.cut.map(|other| match other? {
-                Owner::New => S::kept(&kept.strip),
-                Owner::Old(k) => S::kept(&list[first + k as usize].kept.strip),
-            });
+            let partners = piece.cut.map(|other| strip_of(other?));
             // A crossing with the owner's mirror image across the edge's perpendicular
             // bisector is the edge's midpoint (see `strips.rs`): that one value, not a root
             // of eq. (2) equal to it.
-            let owner = match piece.owner {
-                Owner::New => S::kept(&kept.strip),
-                Owner::Old(k) => S::kept(&list[first + k as usize].kept.strip),
-            };
+            let owner = strip_of(piece.owner);
             for (i, partner) in partners.iter().enumerate() {
                 if let (Some(owner), Some(partner)) = (&owner, partner) {
                     if owner.reflects(partner) {
@@ -474,11 +478,7 @@ impl<S: Scalar> WedgeLists<S> {
             // The strips of the wedges whose own range ends are the piece's ends.
             let ended = piece.end_of.map(|end| {
                 let (other, j) = end.filter(|(other, _)| *other != piece.owner)?;
-                let strip = match other {
-                    Owner::New => S::kept(&kept.strip),
-                    Owner::Old(k) => S::kept(&list[first + k as usize].kept.strip),
-                };
-                Some((strip?, j))
+                Some((strip_of(other)?, j))
             });
             // Whether each end of the piece is its owner's own range end: recorded by the
             // intersection, or another wedge's end that the strips name as the owner's.
