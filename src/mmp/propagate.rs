@@ -994,7 +994,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// §4.2]: along the edge, `d(v0) + t` grows at slope 1, at least as fast as the wedge's
     /// distance, so beating it at `b1` beats it everywhere (and symmetrically for `v1` at `b0`).
     fn is_dominated_by_vertices(&self, w: &Wedge<S>) -> bool {
-        if w.min_distance().to_f64() > self.max_distance {
+        // Without a maximum distance no wedge is beyond it (its smallest distance is not
+        // computed for nothing: a square root for most wedges).
+        if self.max_distance < f64::INFINITY && w.min_distance().to_f64() > self.max_distance {
             return true;
         }
         let [v0, v1] = self.unfolding.ends(self.mesh, w.edge);
