@@ -74,6 +74,21 @@ pub(crate) trait WedgeFields<S> {
             sigma: self.sigma().clone(),
         }
     }
+
+    /// The smallest distance the wedge gives on its range (its priority [SSK+05 §4]): at the
+    /// foot of the pseudo-source if inside, else at the nearer end (the distance is convex).
+    fn min_distance(&self) -> S
+    where
+        S: Scalar,
+    {
+        let (x, b0, b1) = (self.source_x(), self.b0(), self.b1());
+        if x.compare(b0).is_ge() && x.compare(b1).is_le() {
+            self.sigma().clone() + self.source_y()
+        } else {
+            let d = self.distance_function();
+            S::min_of(&d.at(b0), &d.at(b1))
+        }
+    }
 }
 
 impl<S> WedgeFields<S> for Wedge<S> {
@@ -164,13 +179,6 @@ impl<S: Scalar> Wedge<S> {
 
     /// The smallest distance the wedge gives on its range (its priority [SSK+05 §4]).
     pub fn min_distance(&self) -> S {
-        let inside =
-            self.source_x.compare(&self.b0).is_ge() && self.source_x.compare(&self.b1).is_le();
-        if inside {
-            self.sigma.clone() + &self.source_y
-        } else {
-            let d = self.distance_function();
-            S::min_of(&d.at(&self.b0), &d.at(&self.b1))
-        }
+        WedgeFields::min_distance(self)
     }
 }

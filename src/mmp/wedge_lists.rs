@@ -184,7 +184,7 @@ impl WedgeRef {
 /// edge the new wedge reaches.
 pub(crate) trait Arrivals<S: Scalar> {
     /// The wedge `wedge`, named `at`, waits to be propagated.
-    fn queue(&mut self, at: WedgeRef, wedge: &Wedge<S>);
+    fn queue(&mut self, at: WedgeRef, wedge: &impl WedgeFields<S>);
     /// A wedge, with what it keeps of its construction, reaches the vertex `v` of its
     /// edge at distance `d`.
     fn reach(&mut self, v: VertexId, d: S, wedge: (&Wedge<S>, &Provenance<S>));
@@ -267,11 +267,11 @@ impl<S: Scalar> WedgeLists<S> {
         if !entry.queued {
             return Due::Stale;
         }
-        let wedge = entry.wedge(at.edge);
-        let now = wedge.min_distance().to_f64();
+        let now = entry.min_distance().to_f64();
         if now > key {
             return Due::Later(now);
         }
+        let wedge = entry.wedge(at.edge);
         entry.queued = false;
         let kept = entry.kept.clone();
         if i > 0 && !list[i - 1].queued && list[i - 1].continued_by(&list[i], length) {
@@ -598,7 +598,7 @@ impl<S: Scalar> WedgeLists<S> {
                     serial: entry.serial,
                     place: (start + i) as u32,
                 };
-                arrivals.queue(at, &entry.wedge(e));
+                arrivals.queue(at, entry);
             }
         }
         self.entries = self.entries + fresh.len() - (stop - start);
@@ -651,7 +651,7 @@ mod tests {
     struct Events(Vec<WedgeRef>);
 
     impl Arrivals<f64> for Events {
-        fn queue(&mut self, at: WedgeRef, _wedge: &Wedge<f64>) {
+        fn queue(&mut self, at: WedgeRef, _wedge: &impl WedgeFields<f64>) {
             self.0.push(at);
         }
         fn reach(&mut self, _v: VertexId, _d: f64, _w: (&Wedge<f64>, &Provenance<f64>)) {}
