@@ -5,7 +5,7 @@
 use super::paths::Path;
 use super::source::SurfacePoint;
 use super::unfold::Unfolding;
-use super::wedge::Wedge;
+use super::wedge::{Wedge, WedgeFields};
 use super::wedge_lists::WedgeRef;
 use crate::mesh::{EdgeId, SourceId, TriMesh, VertexId};
 use crate::scalar::Scalar;
@@ -141,7 +141,7 @@ impl<S: Scalar> Front<S> {
     }
 
     /// Queues the wedge named `at` at the smallest distance it gives.
-    pub(crate) fn push_wedge(&mut self, at: WedgeRef, wedge: &Wedge<S>) {
+    pub(crate) fn push_wedge(&mut self, at: WedgeRef, wedge: &impl WedgeFields<S>) {
         let key = wedge.min_distance().to_f64();
         self.queue.push(Event::new(key, EventKind::Wedge(at)));
         self.peak_queue = self.peak_queue.max(self.queue.len());

@@ -13,7 +13,7 @@
 use super::planar::Planar;
 use super::provenance::{compare_ends, Anchor, Provenance, RangeEnd};
 use super::stats::{Eq2Counts, Eq2Decision};
-use super::wedge::{PseudoSource, Wedge};
+use super::wedge::{PseudoSource, Wedge, WedgeFields};
 use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Lower, Scalar, SourceDistance};
 use std::cmp::Ordering;
 
@@ -179,15 +179,25 @@ fn split_shared_range<S: Scalar>(
 /// than the vertex's own wedge, which it touches on the shadow line or at the vertex
 /// ([`Provenance`]). Asked only of pseudo-source wedges against wedges that keep values.
 fn lower_by_anchor<S: Scalar>(
-    (old, old_kept, id): (&Wedge<S>, &Provenance<S>, u32),
+    (old, old_kept, id): (&impl WedgeFields<S>, &Provenance<S>, u32),
     (new, new_kept): (&Wedge<S>, &Provenance<S>),
     vertices: &[S; 2],
 ) -> Option<Owner> {
-    let is_source_of = |a: &Anchor<S>, b: &Wedge<S>| {
-        matches!(b.pseudo_source, PseudoSource::Vertex(_))
-            && b.source_x.compare(&a.point.x) == Ordering::Equal
-            && b.source_y.compare(&a.point.y) == Ordering::Equal
-            && b.sigma.compare_distance(&a.distance) == Ordering::Equal
+    // A wedge's pseudo-source, its image and its distance.
+    type Source<'a, S> = (PseudoSource, [&'a S; 3]);
+    let old_source = (
+        old.pseudo_source(),
+        [old.source_x(), old.source_y(), old.sigma()],
+    );
+    let new_source = (
+        new.pseudo_source,
+        [&new.source_x, &new.source_y, &new.sigma],
+    );
+    let is_source_of = |a: &Anchor<S>, (pseudo_source, [x, y, sigma]): Source<'_, S>| {
+        matches!(pseudo_source, PseudoSource::Vertex(_))
+            && x.compare(&a.point.x) == Ordering::Equal
+            && y.compare(&a.point.y) == Ordering::Equal
+            && sigma.compare_distance(&a.distance) == Ordering::Equal
     };
     let at_vertex = |kept: &Provenance<S>, i: usize| {
         S::kept(&kept.at_ends[i]).map(|distance| Anchor {
@@ -200,7 +210,7 @@ fn lower_by_anchor<S: Scalar>(
             light: None,
         })
     };
-    let anchored_below = |kept: &Provenance<S>, other: &Wedge<S>| {
+    let anchored_below = |kept: &Provenance<S>, other: Source<'_, S>| {
         (0..2).any(|i| {
             [kept.anchor(i), at_vertex(kept, i)]
                 .into_iter()
@@ -208,9 +218,9 @@ fn lower_by_anchor<S: Scalar>(
                 .any(|a| is_source_of(&a, other))
         })
     };
-    if anchored_below(old_kept, new) {
+    if anchored_below(old_kept, new_source) {
         Some(Owner::Old(id))
-    } else if anchored_below(new_kept, old) {
+    } else if anchored_below(new_kept, old_source) {
         Some(Owner::New)
     } else {
         None
@@ -249,11 +259,11 @@ fn cursor_order<S: Scalar>(
 /// Cuts the union of the new wedge's range and the ranges of the wedges it overlaps (sorted,
 /// disjoint, each with an id and what it keeps of its construction) into pieces, each owned by
 /// the better wedge there.
-pub(crate) fn cut_into_pieces<'a, S: Scalar>(
+pub(crate) fn cut_into_pieces<'a, S: Scalar, W: WedgeFields<S> + 'a>(
     counts: &mut Eq2Counts,
     mut log: Option<&mut Vec<Eq2Decision>>,
     pieces: &mut Vec<Piece<S>>,
-    overlapping: impl Iterator<Item = (u32, &'a Wedge<S>, &'a Provenance<S>)>,
+    overlapping: impl Iterator<Item = (u32, &'a W, &'a Provenance<S>)>,
     (w, my_kept): (&Wedge<S>, &Provenance<S>),
     length: &S,
 ) {
@@ -265,20 +275,20 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
     let mut cursor_end = Some((&w.b0, my_kept, 0, my_image));
     let vertices = [S::zero(), length.clone()];
     for (id, old, old_kept) in overlapping {
-        let old_image = [&old.source_x, &old.source_y];
+        let old_image = [old.source_x(), old.source_y()];
         let (c0, c1) = (
             compare_ends(
-                (&old.b0, old_kept, 0, old_image),
+                (old.b0(), old_kept, 0, old_image),
                 (&w.b0, my_kept, 0, my_image),
             ),
             compare_ends(
-                (&old.b1, old_kept, 1, old_image),
+                (old.b1(), old_kept, 1, old_image),
                 (&w.b1, my_kept, 1, my_image),
             ),
         );
-        let old_b0 = (&old.b0, old_kept, 0, old_image);
+        let old_b0 = (old.b0(), old_kept, 0, old_image);
         if cursor_order(&cursor, cursor_end, old_b0) == Ordering::Less {
-            let range = [cursor.clone(), old.b0.clone()];
+            let range = [cursor.clone(), old.b0().clone()];
             push_piece(
                 pieces,
                 range,
@@ -287,15 +297,20 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
             );
         }
         if c0 == Ordering::Less {
-            let range = [old.b0.clone(), w.b0.clone()];
+            let range = [old.b0().clone(), w.b0.clone()];
             let end_of = [Some((Owner::Old(id), 0)), Some((Owner::New, 0))];
             push_piece(pieces, range, Owner::Old(id), end_of);
         }
-        let lo = if c0 == Ordering::Less { &w.b0 } else { &old.b0 }.clone();
+        let lo = if c0 == Ordering::Less {
+            &w.b0
+        } else {
+            old.b0()
+        }
+        .clone();
         let hi = if c1 == Ordering::Greater {
             &w.b1
         } else {
-            &old.b1
+            old.b1()
         }
         .clone();
         // Whose own range end `lo` and `hi` are: [end][old, new].
@@ -359,7 +374,7 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
         if let (Some(log), Some((range, coefficients))) = (log.as_deref_mut(), record) {
             log.push(Eq2Decision {
                 edge: w.edge.0,
-                existing: old.pseudo_source,
+                existing: old.pseudo_source(),
                 arriving: w.pseudo_source,
                 range,
                 case,
@@ -368,13 +383,13 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar>(
             });
         }
         if c1 == Ordering::Greater {
-            let range = [w.b1.clone(), old.b1.clone()];
+            let range = [w.b1.clone(), old.b1().clone()];
             let end_of = [Some((Owner::New, 1)), Some((Owner::Old(id), 1))];
             push_piece(pieces, range, Owner::Old(id), end_of);
         }
         cursor_of = end_of[1];
         cursor_end = if owns[1][0] {
-            Some((&old.b1, old_kept, 1, old_image))
+            Some((old.b1(), old_kept, 1, old_image))
         } else {
             owns[1][1].then_some((&w.b1, my_kept, 1, my_image))
         };

@@ -16,7 +16,7 @@ use super::stop::StopPoints;
 use super::strips::{OfferedWedges, Strip, Through};
 use super::unfold::{FaceLayout, Unfolding};
 use super::vertex_field::propagate_vertices;
-use super::wedge::{PseudoSource, Wedge};
+use super::wedge::{PseudoSource, Wedge, WedgeFields};
 use super::wedge_lists::{Arrivals, Due, WedgeLists, WedgeRef};
 use crate::mesh::{EdgeId, FaceId, Side, SourceId, TriMesh, VertexId};
 use crate::scalar::{Scalar, Sign, Site};
@@ -265,7 +265,7 @@ struct Reach<'a, S: Scalar> {
 }
 
 impl<S: Scalar> Arrivals<S> for Reach<'_, S> {
-    fn queue(&mut self, at: WedgeRef, wedge: &Wedge<S>) {
+    fn queue(&mut self, at: WedgeRef, wedge: &impl WedgeFields<S>) {
         self.front.push_wedge(at, wedge);
     }
 
@@ -321,7 +321,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             if key > self.max_distance {
                 break;
             }
-            if self.stops_here(key) {
+            if self.stop.is_some() && self.stops_here(key) {
                 self.stats.stopped_at_stop_points = true;
                 break;
             }
@@ -998,7 +998,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// §4.2]: along the edge, `d(v0) + t` grows at slope 1, at least as fast as the wedge's
     /// distance, so beating it at `b1` beats it everywhere (and symmetrically for `v1` at `b0`).
     fn is_dominated_by_vertices(&self, w: &Wedge<S>) -> bool {
-        if w.min_distance().to_f64() > self.max_distance {
+        // Without a maximum distance no wedge is beyond it (its smallest distance is not
+        // computed for nothing: a square root for most wedges).
+        if self.max_distance < f64::INFINITY && w.min_distance().to_f64() > self.max_distance {
             return true;
         }
         let [v0, v1] = self.unfolding.ends(self.mesh, w.edge);

@@ -43,6 +43,81 @@ pub struct Wedge<S> {
     pub source: SourceId,
 }
 
+/// The fields of a wedge that the intersection reads ([`cut_into_pieces`]), read where they
+/// are stored: an edge list keeps its wedges without their edge, and copying the overlapped
+/// ones out into wedges cost more than the rest of placing a new wedge beside them.
+///
+/// [`cut_into_pieces`]: super::intersect::cut_into_pieces
+pub(crate) trait WedgeFields<S> {
+    /// Start of the range.
+    fn b0(&self) -> &S;
+    /// End of the range.
+    fn b1(&self) -> &S;
+    /// The pseudo-source's position along the edge.
+    fn source_x(&self) -> &S;
+    /// The pseudo-source's distance from the edge's line.
+    fn source_y(&self) -> &S;
+    /// Geodesic distance from the pseudo-source to the source.
+    fn sigma(&self) -> &S;
+    /// The pseudo-source.
+    fn pseudo_source(&self) -> PseudoSource;
+
+    /// The geodesic distance the wedge gives along its edge.
+    #[inline]
+    fn distance_function(&self) -> SourceDistance<S>
+    where
+        S: Clone,
+    {
+        SourceDistance {
+            x: self.source_x().clone(),
+            y: self.source_y().clone(),
+            sigma: self.sigma().clone(),
+        }
+    }
+
+    /// The smallest distance the wedge gives on its range (its priority [SSK+05 §4]): at the
+    /// foot of the pseudo-source if inside, else at the nearer end (the distance is convex).
+    fn min_distance(&self) -> S
+    where
+        S: Scalar,
+    {
+        let (x, b0, b1) = (self.source_x(), self.b0(), self.b1());
+        if x.compare(b0).is_ge() && x.compare(b1).is_le() {
+            self.sigma().clone() + self.source_y()
+        } else {
+            let d = self.distance_function();
+            S::min_of(&d.at(b0), &d.at(b1))
+        }
+    }
+}
+
+impl<S> WedgeFields<S> for Wedge<S> {
+    #[inline(always)]
+    fn b0(&self) -> &S {
+        &self.b0
+    }
+    #[inline(always)]
+    fn b1(&self) -> &S {
+        &self.b1
+    }
+    #[inline(always)]
+    fn source_x(&self) -> &S {
+        &self.source_x
+    }
+    #[inline(always)]
+    fn source_y(&self) -> &S {
+        &self.source_y
+    }
+    #[inline(always)]
+    fn sigma(&self) -> &S {
+        &self.sigma
+    }
+    #[inline(always)]
+    fn pseudo_source(&self) -> PseudoSource {
+        self.pseudo_source
+    }
+}
+
 impl<S: Scalar> Wedge<S> {
     /// Distance from the pseudo-source to the point `b0` of the edge.
     pub fn d0(&self) -> S {
@@ -104,13 +179,6 @@ impl<S: Scalar> Wedge<S> {
 
     /// The smallest distance the wedge gives on its range (its priority [SSK+05 §4]).
     pub fn min_distance(&self) -> S {
-        let inside =
-            self.source_x.compare(&self.b0).is_ge() && self.source_x.compare(&self.b1).is_le();
-        if inside {
-            self.sigma.clone() + &self.source_y
-        } else {
-            let d = self.distance_function();
-            S::min_of(&d.at(&self.b0), &d.at(&self.b1))
-        }
+        WedgeFields::min_distance(self)
     }
 }
