@@ -235,13 +235,31 @@ fn rim_pseudo_sources_level_above_a_wall_edge_are_certified_and_agree_with_f64()
     }
 }
 
+/// A plate with a rectangular hole turned by 30 degrees, its sides subdivided
+/// (`tests/data/plate_rotated_hole.py`): the top and the hole's walls are flat regions meeting
+/// along straight rims of collinear vertices, so images cross a rim at many edges, and the rim
+/// vertices' wedges meet the wedges that lit them along their shadow lines. From v1 and v69,
+/// 4 decisions each were uncertified at stop 25 (both certified since images cross a crease by
+/// one map and ends on a shadow line keep it).
+#[test]
+fn a_plate_with_a_turned_subdivided_hole_is_certified_and_agrees_with_f64() {
+    let mesh = common::data_mesh("plate_rotated_hole.obj");
+    for source in [1, 69] {
+        let source = SurfacePoint::Vertex(VertexId(source));
+        assert_certified_and_agrees_with_f64(&mesh, source, &format!("{source:?}"));
+    }
+}
+
 /// cad_featuretype.obj of the shared models (skipped where absent), whose hole walls are
 /// vertical below straight rims subdivided into collinear vertices: from v0, two rim
 /// pseudo-sources level above a wall edge (the slope of `q2 - beta^2` at a root), apexes on
 /// the line from an image through a vertex of the edge (their shadows are that vertex), and
 /// pseudo-sources lit straight along a rim that tie at the edge's vertex (a strictly monotone
-/// difference). Those left 249 of its decisions uncertified at stop 24; the rest, named in the
-/// note of stop 25, are other classes, so this is a bound, and the distances agree with f64.
+/// difference), images across its straight creases and ends on shadow lines (stop 26), and a
+/// root of eq. (2) with L of the wrong sign at the end of a range (a tangency with a mirror
+/// image). Those left 249 of its decisions uncertified at stop 24 and 7 at stop 25; the rest
+/// (named in the notes) are other classes, so this is a bound, and the distances agree with
+/// f64.
 #[test]
 fn a_cad_model_s_walls_below_straight_rims_are_certified() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -255,7 +273,7 @@ fn a_cad_model_s_walls_below_straight_rims_are_certified() {
     let source = [SurfacePoint::Vertex(VertexId(0))];
     let exact = propagate::<Real>(&mesh, &source, &options).expect("a vertex source");
     let uncertified = exact.stats().backend.uncertified;
-    assert!(uncertified <= 7, "{uncertified} decisions uncertified");
+    assert!(uncertified <= 3, "{uncertified} decisions uncertified");
     assert_agrees_with_f64(&mesh, source[0], &exact, "cad_featuretype");
 }
 

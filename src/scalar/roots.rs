@@ -300,6 +300,18 @@ pub(crate) fn crossings<T: CertifiedSign>(
         if ties[0] || ties[1] {
             return Some(Crossings::None);
         }
+        // A root of eq. (2) where L has the wrong sign solves no eq. (1), wherever it lies: told
+        // first where that sign is clear, so that such a root at an end of the range (a
+        // tangency with the mirror image: a pseudo-source lit across this very edge, whose
+        // straight way crossed it at the range's end) need not be placed against the end.
+        let wrong_side = |sl: Sign| sl != Sign::Zero && sl != sbeta;
+        if sbeta != Sign::Zero
+            && (two.clone() * &alpha * &u + &gamma)
+                .clear_sign()
+                .is_some_and(wrong_side)
+        {
+            return Some(Crossings::None);
+        }
         let inside = u.certified_sign()? == Sign::Positive
             && (width.clone() - &u).certified_sign()? == Sign::Positive;
         if !inside {
@@ -307,7 +319,7 @@ pub(crate) fn crossings<T: CertifiedSign>(
         }
         if sbeta != Sign::Zero {
             let sl = (two.clone() * &alpha * &u + &gamma).certified_sign()?;
-            if sl != Sign::Zero && sl != sbeta {
+            if wrong_side(sl) {
                 return Some(Crossings::None);
             }
             if sbeta == Sign::Negative {
