@@ -91,32 +91,40 @@ pub(crate) trait WedgeFields<S> {
     }
 }
 
-impl<S> WedgeFields<S> for Wedge<S> {
-    #[inline(always)]
-    fn b0(&self) -> &S {
-        &self.b0
-    }
-    #[inline(always)]
-    fn b1(&self) -> &S {
-        &self.b1
-    }
-    #[inline(always)]
-    fn source_x(&self) -> &S {
-        &self.source_x
-    }
-    #[inline(always)]
-    fn source_y(&self) -> &S {
-        &self.source_y
-    }
-    #[inline(always)]
-    fn sigma(&self) -> &S {
-        &self.sigma
-    }
-    #[inline(always)]
-    fn pseudo_source(&self) -> PseudoSource {
-        self.pseudo_source
-    }
+/// Implements [`WedgeFields`] for a type that stores the wedge's fields under their names.
+macro_rules! wedge_fields {
+    ($t:ident) => {
+        impl<S: $crate::scalar::Scalar> $crate::mmp::wedge::WedgeFields<S> for $t<S> {
+            #[inline(always)]
+            fn b0(&self) -> &S {
+                &self.b0
+            }
+            #[inline(always)]
+            fn b1(&self) -> &S {
+                &self.b1
+            }
+            #[inline(always)]
+            fn source_x(&self) -> &S {
+                &self.source_x
+            }
+            #[inline(always)]
+            fn source_y(&self) -> &S {
+                &self.source_y
+            }
+            #[inline(always)]
+            fn sigma(&self) -> &S {
+                &self.sigma
+            }
+            #[inline(always)]
+            fn pseudo_source(&self) -> $crate::mmp::wedge::PseudoSource {
+                self.pseudo_source
+            }
+        }
+    };
 }
+pub(crate) use wedge_fields;
+
+wedge_fields!(Wedge);
 
 impl<S: Scalar> Wedge<S> {
     /// Distance from the pseudo-source to the point `b0` of the edge.

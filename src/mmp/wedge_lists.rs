@@ -10,7 +10,7 @@ use super::intersect::{cut_into_pieces, Owner, Piece};
 use super::provenance::{compare_ends, keeps_values, one_end, Provenance, RangeEnd};
 use super::stats::Stats;
 use super::strips::OfferedWedges;
-use super::wedge::{PseudoSource, Wedge, WedgeFields};
+use super::wedge::{wedge_fields, PseudoSource, Wedge, WedgeFields};
 use crate::mesh::{EdgeId, Side, SourceId, VertexId};
 use crate::scalar::{Scalar, Site, SourceDistance, FRONT_MARGIN};
 use std::cmp::Ordering;
@@ -118,32 +118,7 @@ impl<S: Scalar> Entry<S> {
     }
 }
 
-impl<S: Scalar> WedgeFields<S> for Entry<S> {
-    #[inline(always)]
-    fn b0(&self) -> &S {
-        &self.b0
-    }
-    #[inline(always)]
-    fn b1(&self) -> &S {
-        &self.b1
-    }
-    #[inline(always)]
-    fn source_x(&self) -> &S {
-        &self.source_x
-    }
-    #[inline(always)]
-    fn source_y(&self) -> &S {
-        &self.source_y
-    }
-    #[inline(always)]
-    fn sigma(&self) -> &S {
-        &self.sigma
-    }
-    #[inline(always)]
-    fn pseudo_source(&self) -> PseudoSource {
-        self.pseudo_source
-    }
-}
+wedge_fields!(Entry);
 
 /// Reusable buffers of the intersection, kept across insertions to avoid allocating.
 struct Scratch<S: Scalar> {
