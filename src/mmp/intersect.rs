@@ -19,10 +19,28 @@ use std::cmp::Ordering;
 
 /// Who owns a piece of the edge after an intersection: the arriving wedge, or the existing
 /// wedge of that id.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Eq)]
 pub(crate) enum Owner {
     New,
     Old(u32),
+}
+
+impl Owner {
+    /// A number per owner, so that owners compare without branching on the variant.
+    #[inline(always)]
+    fn key(self) -> u64 {
+        match self {
+            Owner::New => u64::MAX,
+            Owner::Old(k) => u64::from(k),
+        }
+    }
+}
+
+impl PartialEq for Owner {
+    #[inline(always)]
+    fn eq(&self, other: &Self) -> bool {
+        self.key() == other.key()
+    }
 }
 
 /// A stretch `[lo, hi]` of the edge and the wedge that owns it.
