@@ -17,29 +17,28 @@ use super::wedge::{PseudoSource, Wedge, WedgeFields};
 use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Lower, Scalar, SourceDistance};
 use std::cmp::Ordering;
 
-/// Who owns a piece of the edge after an intersection: the arriving wedge, or the existing
-/// wedge of that id.
-#[derive(Clone, Copy, Debug, Eq)]
-pub(crate) enum Owner {
-    New,
-    Old(u32),
-}
+/// Who owns a piece of the edge after an intersection: the arriving wedge
+/// ([`Owner::NEW`]), or the existing wedge of an id ([`Owner::old`]). One number, so that
+/// owners compare in one instruction (a two-variant enum, its variant compared first, cost
+/// 4 % of a run's instructions on stanford_bunny).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Owner(u32);
 
 impl Owner {
-    /// A number per owner, so that owners compare without branching on the variant.
-    #[inline(always)]
-    fn key(self) -> u64 {
-        match self {
-            Owner::New => u64::MAX,
-            Owner::Old(k) => u64::from(k),
-        }
-    }
-}
+    /// The arriving wedge.
+    pub(crate) const NEW: Owner = Owner(u32::MAX);
 
-impl PartialEq for Owner {
+    /// The existing wedge `id` (its place among the overlapped wedges, below `u32::MAX`).
     #[inline(always)]
-    fn eq(&self, other: &Self) -> bool {
-        self.key() == other.key()
+    pub(crate) fn old(id: u32) -> Owner {
+        debug_assert!(id != u32::MAX, "an overlapped wedge's place");
+        Owner(id)
+    }
+
+    /// The id of the existing wedge, `None` for the arriving one.
+    #[inline(always)]
+    pub(crate) fn old_id(self) -> Option<u32> {
+        (self != Owner::NEW).then_some(self.0)
     }
 }
 
@@ -131,7 +130,7 @@ fn split_shared_range<S: Scalar>(
         return (Eq2Case::None, false);
     }
     if S::same_distance_function(theirs, mine, &(hi.clone() - &lo)) {
-        push_piece(pieces, [lo, hi], Owner::Old(id), end_of);
+        push_piece(pieces, [lo, hi], Owner::old(id), end_of);
         return (Eq2Case::Infinite, true);
     }
     let [[their_lo, my_lo], [their_hi, my_hi]] = [(&lo, 0), (&hi, 1)].map(|(at, i)| {
@@ -141,17 +140,17 @@ fn split_shared_range<S: Scalar>(
     });
     let their_max = S::max_of(&their_lo, &their_hi);
     if min_on(mine, &lo, &hi, &my_lo, &my_hi).compare_distance(&their_max) != Ordering::Less {
-        push_piece(pieces, [lo, hi], Owner::Old(id), end_of);
+        push_piece(pieces, [lo, hi], Owner::old(id), end_of);
         return (Eq2Case::None, false);
     }
     let my_max = S::max_of(&my_lo, &my_hi);
     if my_max.compare_distance(&min_on(theirs, &lo, &hi, &their_lo, &their_hi)) == Ordering::Less {
-        push_piece(pieces, [lo, hi], Owner::New, end_of);
+        push_piece(pieces, [lo, hi], Owner::NEW, end_of);
         return (Eq2Case::None, false);
     }
     let bisector = S::bisector(theirs, mine, &lo, &hi, &known);
     if matches!(bisector.roots, BisectorRoots::Infinite) {
-        push_piece(pieces, [lo, hi], Owner::Old(id), end_of);
+        push_piece(pieces, [lo, hi], Owner::old(id), end_of);
         return (Eq2Case::Infinite, true);
     }
     // The owner of each stretch is the backend's answer; a tie keeps the existing wedge. The
@@ -164,8 +163,8 @@ fn split_shared_range<S: Scalar>(
     let mut start = lo;
     for (end, lower) in bisector.stretches() {
         let (owner, other) = match lower {
-            Lower::Second => (Owner::New, Owner::Old(id)),
-            Lower::First | Lower::Neither => (Owner::Old(id), Owner::New),
+            Lower::Second => (Owner::NEW, Owner::old(id)),
+            Lower::First | Lower::Neither => (Owner::old(id), Owner::NEW),
         };
         changes += usize::from(previous.is_some_and(|p| p != owner));
         let cut = [
@@ -237,9 +236,9 @@ fn lower_by_anchor<S: Scalar>(
         })
     };
     if anchored_below(old_kept, new_source) {
-        Some(Owner::Old(id))
+        Some(Owner::old(id))
     } else if anchored_below(new_kept, old_source) {
-        Some(Owner::New)
+        Some(Owner::NEW)
     } else {
         None
     }
@@ -287,7 +286,7 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar, W: WedgeFields<S> + 'a>(
 ) {
     let mine = w.distance_function();
     let mut cursor = w.b0.clone();
-    let mut cursor_of = Some((Owner::New, 0));
+    let mut cursor_of = Some((Owner::NEW, 0));
     // The range end of a wedge that the cursor is, if it is one.
     let my_image = [&w.source_x, &w.source_y];
     let mut cursor_end = Some((&w.b0, my_kept, 0, my_image));
@@ -310,14 +309,14 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar, W: WedgeFields<S> + 'a>(
             push_piece(
                 pieces,
                 range,
-                Owner::New,
-                [cursor_of, Some((Owner::Old(id), 0))],
+                Owner::NEW,
+                [cursor_of, Some((Owner::old(id), 0))],
             );
         }
         if c0 == Ordering::Less {
             let range = [old.b0().clone(), w.b0.clone()];
-            let end_of = [Some((Owner::Old(id), 0)), Some((Owner::New, 0))];
-            push_piece(pieces, range, Owner::Old(id), end_of);
+            let end_of = [Some((Owner::old(id), 0)), Some((Owner::NEW, 0))];
+            push_piece(pieces, range, Owner::old(id), end_of);
         }
         let lo = if c0 == Ordering::Less {
             &w.b0
@@ -384,7 +383,7 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar, W: WedgeFields<S> + 'a>(
         // Whose own range end `lo` and `hi` are, the existing wedge's first.
         let end_of = [0, 1].map(|i| {
             let [old_owns, new_owns] = owns[i];
-            (old_owns.then_some((Owner::Old(id), i))).or(new_owns.then_some((Owner::New, i)))
+            (old_owns.then_some((Owner::old(id), i))).or(new_owns.then_some((Owner::NEW, i)))
         });
         let range = ([lo, hi.clone()], end_of);
         let (case, solved) = split_shared_range(pieces, &theirs, &mine, range, (known, lower), id);
@@ -402,8 +401,8 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar, W: WedgeFields<S> + 'a>(
         }
         if c1 == Ordering::Greater {
             let range = [w.b1.clone(), old.b1().clone()];
-            let end_of = [Some((Owner::New, 1)), Some((Owner::Old(id), 1))];
-            push_piece(pieces, range, Owner::Old(id), end_of);
+            let end_of = [Some((Owner::NEW, 1)), Some((Owner::old(id), 1))];
+            push_piece(pieces, range, Owner::old(id), end_of);
         }
         cursor_of = end_of[1];
         cursor_end = if owns[1][0] {
@@ -415,8 +414,8 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar, W: WedgeFields<S> + 'a>(
     }
     let my_b1 = (&w.b1, my_kept, 1, my_image);
     if cursor_order(&cursor, cursor_end, my_b1) == Ordering::Less {
-        let end_of = [cursor_of, Some((Owner::New, 1))];
-        push_piece(pieces, [cursor, w.b1.clone()], Owner::New, end_of);
+        let end_of = [cursor_of, Some((Owner::NEW, 1))];
+        push_piece(pieces, [cursor, w.b1.clone()], Owner::NEW, end_of);
     }
 }
 
@@ -462,9 +461,9 @@ pub fn intersect<S: Scalar>(
         if !S::has_extent(&piece.lo, &piece.hi, edge_length) {
             continue;
         }
-        let mut wedge = match piece.owner {
-            Owner::New => arriving.clone(),
-            Owner::Old(i) => existing[i as usize].clone(),
+        let mut wedge = match piece.owner.old_id() {
+            None => arriving.clone(),
+            Some(i) => existing[i as usize].clone(),
         };
         wedge.b0 = piece.lo;
         wedge.b1 = piece.hi;

@@ -356,7 +356,7 @@ impl<S: Scalar> WedgeLists<S> {
         let overlapping = (0..).zip(&list[first..end]).map(|(k, x)| (k, x, &x.kept));
         let new = (&w, &kept);
         cut_into_pieces(&mut stats.eq2, log, &mut pieces, overlapping, new, length);
-        if pieces.iter().any(|p| p.owner == Owner::New) {
+        if pieces.iter().any(|p| p.owner == Owner::NEW) {
             let edge = (length, ends);
             let run = (stats, arrivals, strips);
             self.rebuild((&w, &kept), first..end, &mut pieces, edge, run);
@@ -416,9 +416,9 @@ impl<S: Scalar> WedgeLists<S> {
         // that keep values (for the others, not even the overlapped wedge is read).
         let strip_of = |owner: Owner| {
             keeps_values
-                .then(|| match owner {
-                    Owner::New => S::kept(&kept.strip),
-                    Owner::Old(k) => S::kept(&list[first + k as usize].kept.strip),
+                .then(|| match owner.old_id() {
+                    None => S::kept(&kept.strip),
+                    Some(k) => S::kept(&list[first + k as usize].kept.strip),
                 })
                 .flatten()
         };
@@ -426,9 +426,9 @@ impl<S: Scalar> WedgeLists<S> {
         for mut piece in pieces.drain(..) {
             // Kept only by number types that keep values: f64 builds none of it.
             let crossed = piece.cut.map(|other| {
-                keeps_values.then(|| match other? {
-                    Owner::New => Some(mine.clone()),
-                    Owner::Old(k) => Some(list[first + k as usize].wedge(e).distance_function()),
+                keeps_values.then(|| match other?.old_id() {
+                    None => Some(mine.clone()),
+                    Some(k) => Some(list[first + k as usize].wedge(e).distance_function()),
                 })?
             });
             // The strips of the wedges whose crossings are the piece's ends.
@@ -458,14 +458,14 @@ impl<S: Scalar> WedgeLists<S> {
             // Whether each end of the piece is its owner's own range end: recorded by the
             // intersection, or another wedge's end that is one point with the owner's by
             // structure ([`one_end`]).
-            let range_end = |o: Owner, i: usize| match o {
-                Owner::New => (
+            let range_end = |o: Owner, i: usize| match o.old_id() {
+                None => (
                     if i == 0 { &w.b0 } else { &w.b1 },
                     kept,
                     i,
                     [&w.source_x, &w.source_y],
                 ),
-                Owner::Old(k) => list[first + k as usize].range_end(i),
+                Some(k) => list[first + k as usize].range_end(i),
             };
             let own_end = [0, 1].map(|i| match piece.end_of[i] {
                 Some((o, j)) if o == piece.owner && j == i => Some(true),
@@ -503,8 +503,8 @@ impl<S: Scalar> WedgeLists<S> {
                 }
                 piece_kept
             };
-            let (entry, event) = match piece.owner {
-                Owner::New => {
+            let (entry, event) = match piece.owner.old_id() {
+                None => {
                     // The first vertex is reached at the scale of the offsets near it (a slack
                     // of ulps of the edge let a wedge claim it 2.6e-16 beyond its range, by a
                     // straight line shorter than the way round the range's end).
@@ -531,7 +531,7 @@ impl<S: Scalar> WedgeLists<S> {
                     stats.wedges_created += 1;
                     (Entry::new(wedge, piece_kept, next_serial()), true)
                 }
-                Owner::Old(k) => {
+                Some(k) => {
                     let k = k as usize;
                     let mut entry = list[first + k].clone();
                     let kept_ends = keeps([&entry.b0, &entry.b1], &piece.lo, &piece.hi, own_end);
