@@ -469,7 +469,11 @@ impl<S: Scalar> WedgeLists<S> {
             };
             let own_end = [0, 1].map(|i| match piece.end_of[i] {
                 Some((o, j)) if o == piece.owner && j == i => Some(true),
-                Some((o, j)) if one_end(range_end(piece.owner, i), range_end(o, j)) => Some(true),
+                Some((o, j))
+                    if keeps_values && one_end(range_end(piece.owner, i), range_end(o, j)) =>
+                {
+                    Some(true)
+                }
                 _ => None,
             });
             // The keys of the piece's ends: a crossing's, or another wedge's end's.
