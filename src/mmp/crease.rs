@@ -61,9 +61,8 @@ impl<S: Scalar> Crease<S> {
     /// A point of the frame of the region left in the frame of the region entered.
     pub(crate) fn apply(&self, q: &[S; 2]) -> [S; 2] {
         let r = [q[0].clone() - &self.from[0], q[1].clone() - &self.from[1]];
-        let [m0, m1] = &self.rotation;
         [0, 1].map(|i| {
-            let m = if i == 0 { m0 } else { m1 };
+            let m = &self.rotation[i];
             self.to[i].clone() + &(m[0].clone() * &r[0] + &(m[1].clone() * &r[1]))
         })
     }

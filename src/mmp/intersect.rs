@@ -11,7 +11,7 @@
 //! engine's edge lists ([`wedge_lists`](super::wedge_lists)) store the pieces as wedges.
 
 use super::planar::Planar;
-use super::provenance::{compare_ends, Anchor, Provenance, RangeEnd};
+use super::provenance::{compare_ends, range_end, Anchor, Provenance, RangeEnd};
 use super::stats::{Eq2Counts, Eq2Decision};
 use super::wedge::{PseudoSource, Wedge, WedgeFields};
 use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Lower, Scalar, SourceDistance};
@@ -288,20 +288,13 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar, W: WedgeFields<S> + 'a>(
     let mut cursor = w.b0.clone();
     let mut cursor_of = Some((Owner::NEW, 0));
     // The range end of a wedge that the cursor is, if it is one.
-    let my_image = [&w.source_x, &w.source_y];
-    let mut cursor_end = Some((&w.b0, my_kept, 0, my_image));
+    let mut cursor_end = Some(range_end(w, my_kept, 0));
     let vertices = [S::zero(), length.clone()];
     for (id, old, old_kept) in overlapping {
         let old_image = [old.source_x(), old.source_y()];
         let (c0, c1) = (
-            compare_ends(
-                (old.b0(), old_kept, 0, old_image),
-                (&w.b0, my_kept, 0, my_image),
-            ),
-            compare_ends(
-                (old.b1(), old_kept, 1, old_image),
-                (&w.b1, my_kept, 1, my_image),
-            ),
+            compare_ends((old.b0(), old_kept, 0, old_image), range_end(w, my_kept, 0)),
+            compare_ends((old.b1(), old_kept, 1, old_image), range_end(w, my_kept, 1)),
         );
         let old_b0 = (old.b0(), old_kept, 0, old_image);
         if cursor_order(&cursor, cursor_end, old_b0) == Ordering::Less {
@@ -408,11 +401,11 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar, W: WedgeFields<S> + 'a>(
         cursor_end = if owns[1][0] {
             Some((old.b1(), old_kept, 1, old_image))
         } else {
-            owns[1][1].then_some((&w.b1, my_kept, 1, my_image))
+            owns[1][1].then_some(range_end(w, my_kept, 1))
         };
         cursor = hi;
     }
-    let my_b1 = (&w.b1, my_kept, 1, my_image);
+    let my_b1 = range_end(w, my_kept, 1);
     if cursor_order(&cursor, cursor_end, my_b1) == Ordering::Less {
         let end_of = [cursor_of, Some((Owner::NEW, 1))];
         push_piece(pieces, [cursor, w.b1.clone()], Owner::NEW, end_of);

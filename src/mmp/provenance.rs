@@ -16,6 +16,7 @@ use super::flat_region::RegionImage;
 use super::paths::Path;
 use super::planar::Planar;
 use super::strips::Strip;
+use super::wedge::Wedge;
 use crate::scalar::{Scalar, SourceDistance};
 use std::cmp::Ordering;
 
@@ -299,6 +300,17 @@ pub(crate) fn keeps_values<S: Scalar>() -> bool {
 /// A range end of a wedge as [`compare_ends`] sees it: its value, what the wedge keeps, which
 /// end (0: `b0`, 1: `b1`), and the wedge's image.
 pub(crate) type RangeEnd<'a, S> = (&'a S, &'a Provenance<S>, usize, [&'a S; 2]);
+
+/// Range end `i` (0: `b0`, 1: `b1`) of wedge `w`, which keeps `kept`, as [`compare_ends`]
+/// sees it.
+pub(crate) fn range_end<'a, S: Scalar>(
+    w: &'a Wedge<S>,
+    kept: &'a Provenance<S>,
+    i: usize,
+) -> RangeEnd<'a, S> {
+    let value = if i == 0 { &w.b0 } else { &w.b1 };
+    (value, kept, i, [&w.source_x, &w.source_y])
+}
 
 /// Whether two range ends on one edge are one point by structure: their strips name them
 /// alike, or both lie on one shadow line, of one anchor from one image (the line meets the

@@ -7,7 +7,7 @@
 
 use super::edge_wedges::EdgeWedges;
 use super::intersect::{cut_into_pieces, Owner, Piece};
-use super::provenance::{compare_ends, keeps_values, one_end, Provenance, RangeEnd};
+use super::provenance::{compare_ends, keeps_values, one_end, range_end, Provenance, RangeEnd};
 use super::stats::Stats;
 use super::strips::OfferedWedges;
 use super::wedge::{wedge_fields, PseudoSource, Wedge, WedgeFields};
@@ -338,15 +338,14 @@ impl<S: Scalar> WedgeLists<S> {
             return;
         }
         let list = &self.lists[e.index()];
-        let image = [&w.source_x, &w.source_y];
         let first = list.partition_point(|x| {
-            compare_ends(x.range_end(1), (&w.b0, &kept, 0, image)) != Ordering::Greater
+            compare_ends(x.range_end(1), range_end(&w, &kept, 0)) != Ordering::Greater
         });
         let end = first
             + list[first..]
                 .iter()
                 .take_while(|x| {
-                    compare_ends(x.range_end(0), (&w.b1, &kept, 1, image)) == Ordering::Less
+                    compare_ends(x.range_end(0), range_end(&w, &kept, 1)) == Ordering::Less
                 })
                 .count();
         let mut pieces = std::mem::take(&mut self.scratch.pieces);
@@ -458,19 +457,15 @@ impl<S: Scalar> WedgeLists<S> {
             // Whether each end of the piece is its owner's own range end: recorded by the
             // intersection, or another wedge's end that is one point with the owner's by
             // structure ([`one_end`]).
-            let range_end = |o: Owner, i: usize| match o.old_id() {
-                None => (
-                    if i == 0 { &w.b0 } else { &w.b1 },
-                    kept,
-                    i,
-                    [&w.source_x, &w.source_y],
-                ),
+            let end_of_owner = |o: Owner, i: usize| match o.old_id() {
+                None => range_end(w, kept, i),
                 Some(k) => list[first + k as usize].range_end(i),
             };
             let own_end = [0, 1].map(|i| match piece.end_of[i] {
                 Some((o, j)) if o == piece.owner && j == i => Some(true),
                 Some((o, j))
-                    if keeps_values && one_end(range_end(piece.owner, i), range_end(o, j)) =>
+                    if keeps_values
+                        && one_end(end_of_owner(piece.owner, i), end_of_owner(o, j)) =>
                 {
                     Some(true)
                 }
@@ -502,7 +497,7 @@ impl<S: Scalar> WedgeLists<S> {
                     .then(|| ([&owner.source_x, &owner.source_y], &owner.sigma));
                 for i in 0..2 {
                     if let Some((other, j)) = piece.end_of[i].filter(|(o, _)| *o != piece.owner) {
-                        piece_kept = piece_kept.ending_on(i, range_end(other, j), own);
+                        piece_kept = piece_kept.ending_on(i, end_of_owner(other, j), own);
                     }
                 }
                 piece_kept
