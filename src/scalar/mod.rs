@@ -221,9 +221,10 @@ pub trait Scalar: Field {
     /// where the two chains give images that differ in their last bits.
     fn same_image(a: &SourceDistance<Self>, b: &SourceDistance<Self>, scale: &Self) -> bool;
 
-    /// Whether two distance functions are proved the same without deciding anything that the
-    /// backend cannot settle at once: for a tie that provenance suggests ([`Scalar::Kept`]),
-    /// checked where the suggestion may not hold; `false` for number types that keep no values.
+    /// Whether two distance functions are proved the same, by signs the backend certifies (a
+    /// sign it cannot certify is no decision and no tie): for a tie that provenance suggests
+    /// ([`Scalar::Kept`]), checked where the suggestion may not hold; `false` for number types
+    /// that keep no values.
     fn proved_same_distance_function(_a: &SourceDistance<Self>, _b: &SourceDistance<Self>) -> bool {
         false
     }
