@@ -14,6 +14,7 @@
 
 use super::bisector::Eq2Terms;
 use super::{BisectorRoots, Eq2Coefficients, Field, Ring, Sign, SourceDistance};
+use std::cell::OnceCell;
 
 /// A number type that may know the exact sign of a value: `None` means "cannot tell" (a filter
 /// too coarse for it); an exact type always answers.
@@ -24,6 +25,17 @@ pub(crate) trait CertifiedSign: Ring {
     /// the value away from zero), else `None`; a type that always answers may still say `None`
     /// here, so that a sign near zero can be avoided where the answer does not need it.
     fn clear_sign(&self) -> Option<Sign> {
+        self.certified_sign()
+    }
+
+    /// Whether [`CertifiedSign::certified_sign`] always answers (an exact type, which may
+    /// answer without a certificate). For such a type, a sign that [`CertifiedSign::proved_sign`]
+    /// cannot certify is left to an argument that does not need it; for the others, `None` is a
+    /// question for a finer type.
+    const ALWAYS_ANSWERS: bool = false;
+
+    /// The sign where it is certified, else `None`, and no decision.
+    fn proved_sign(&self) -> Option<Sign> {
         self.certified_sign()
     }
 }
@@ -403,7 +415,13 @@ pub(crate) fn crossings<T: CertifiedSign>(
     // G != 0 here, since the discriminant beta^2 G^2 is positive. A range that starts or ends
     // at such a vertex, where the other wedge gives the vertex its distance, has a near-double
     // root of P there, which no filter can place; the gap's sign can.
-    let at_end = |larger: bool, end: &T, from_lo: &T, is_hi: bool| -> Option<Sign> {
+    // P at each end where it is proved (asked once): `Some(None)` where it is not.
+    let p_at_end: [OnceCell<Option<Sign>>; 2] = Default::default();
+    let p_value =
+        |from_lo: &T| eq2.a.clone() * from_lo * from_lo + &(eq2.b.clone() * from_lo) + &eq2.c;
+    // The sign of a root minus an end; `assumed[i]` stands for P's sign at end `i` where it is
+    // not proved.
+    let at_end = |larger: bool, end: &T, from_lo: &T, is_hi: bool, assumed: [Sign; 2]| {
         for (s, slope) in [(a, negate(alpha_sign)), (b, alpha_sign)] {
             if s.y.certified_sign()? == Sign::Zero
                 && (s.x.clone() - end).certified_sign()? == Sign::Zero
@@ -413,17 +431,26 @@ pub(crate) fn crossings<T: CertifiedSign>(
             }
         }
         let slope = || (two.clone() * &eq2.a * from_lo + &eq2.b).certified_sign();
-        let value = eq2.a.clone() * from_lo * from_lo + &(eq2.b.clone() * from_lo) + &eq2.c;
-        let at_p = if ties[usize::from(is_hi)] {
+        let i = usize::from(is_hi);
+        let at_p = if ties[i] {
             Sign::Zero
         } else {
-            value.certified_sign().or_else(|| signs.at_end(is_hi))?
+            let proved = p_at_end[i].get_or_init(|| {
+                p_value(from_lo)
+                    .proved_sign()
+                    .or_else(|| signs.at_end(is_hi))
+            });
+            match proved {
+                Some(sign) => *sign,
+                None if T::ALWAYS_ANSWERS => assumed[i],
+                None => return None,
+            }
         };
         roots.root_minus_given(larger, at_p, slope)
     };
-    let solves = |larger: bool| -> Option<bool> {
-        if at_end(larger, lo, &zero, false)? != Sign::Positive
-            || at_end(larger, hi, &width, true)? != Sign::Negative
+    let solves_assuming = |larger: bool, assumed: [Sign; 2]| -> Option<bool> {
+        if at_end(larger, lo, &zero, false, assumed)? != Sign::Positive
+            || at_end(larger, hi, &width, true, assumed)? != Sign::Negative
         {
             return Some(false);
         }
@@ -447,6 +474,37 @@ pub(crate) fn crossings<T: CertifiedSign>(
             return Some(false);
         }
         Some(true)
+    };
+    // A root of P exactly at an end, where nothing proves P zero there, is most often one the
+    // algorithm made: a mirror root (the pseudo-source was reached back through that end's
+    // vertex from the other's image) or a tangency. Where every sign P may have there gives
+    // the same answer, that answer is proved without the sign; else the sign is decided (and
+    // counted uncertified).
+    let solves = |larger: bool| -> Option<bool> {
+        let first = solves_assuming(larger, [Sign::Zero; 2])?;
+        let unproved = || [0, 1].map(|i| matches!(p_at_end[i].get(), Some(None)));
+        if !unproved().contains(&true) {
+            return Some(first);
+        }
+        // Every pair of signs, since another sign at one end may lead to asking the other end.
+        let signs = [Sign::Negative, Sign::Zero, Sign::Positive];
+        let agree = signs.iter().all(|&s0| {
+            signs
+                .iter()
+                .all(|&s1| solves_assuming(larger, [s0, s1]) == Some(first))
+        });
+        if agree {
+            return Some(first);
+        }
+        let unproved = unproved();
+        let decided = [(&zero, 0), (&width, 1)].map(|(from_lo, i)| {
+            if unproved[i] {
+                p_value(from_lo).certified_sign().unwrap_or(Sign::Zero)
+            } else {
+                Sign::Zero
+            }
+        });
+        solves_assuming(larger, decided)
     };
     let (smaller, larger) = (solves(false)?, solves(true)?);
     Some(Crossings::Quadratic {

@@ -378,21 +378,6 @@ impl Real {
         [lo.to_f64(Round::Down), hi.to_f64(Round::Up)]
     }
 
-    /// The sign where it is certified, counted as a decision; `None`, and no decision, where it
-    /// is not. For questions about structure, where `no` only leaves the values to compare: a
-    /// tie of two images built along different chains of faces is often proved here by a normal
-    /// form or a separation bound, beyond what the first stages settle.
-    fn proved_sign(&self) -> Option<Sign> {
-        let (sign, certificate) = self
-            .clear_certified_sign()
-            .unwrap_or_else(|| self.certified_sign());
-        if matches!(certificate, Certificate::Uncertified(_)) {
-            return None;
-        }
-        audit::record(certificate, || self.enclosure());
-        Some(sign)
-    }
-
     /// The sign, counted as a decision of the current run.
     fn decide(&self) -> Sign {
         let (sign, certificate) = self.certified_sign();
@@ -537,6 +522,23 @@ impl CertifiedSign for Real {
         audit::record(certificate, || self.enclosure());
         Some(sign)
     }
+
+    /// The sign where it is certified, counted as a decision; `None`, and no decision, where it
+    /// is not. For questions about structure, where `no` only leaves the values to compare: a
+    /// tie of two images built along different chains of faces is often proved here by a normal
+    /// form or a separation bound, beyond what the first stages settle.
+    const ALWAYS_ANSWERS: bool = true;
+
+    fn proved_sign(&self) -> Option<Sign> {
+        let (sign, certificate) = self
+            .clear_certified_sign()
+            .unwrap_or_else(|| self.certified_sign());
+        if matches!(certificate, Certificate::Uncertified(_)) {
+            return None;
+        }
+        audit::record(certificate, || self.enclosure());
+        Some(sign)
+    }
 }
 
 impl Scalar for Real {
@@ -617,14 +619,14 @@ impl Scalar for Real {
         roots::same_distance_function(a, b) == Some(true)
     }
 
-    /// By certified signs ([`Real::proved_sign`]).
+    /// By certified signs ([`CertifiedSign::proved_sign`]).
     fn proved_same_distance_function(a: &SourceDistance<Self>, b: &SourceDistance<Self>) -> bool {
-        roots::same_distance_function_by(a, b, Real::proved_sign) == Some(true)
+        roots::same_distance_function_by(a, b, <Real as CertifiedSign>::proved_sign) == Some(true)
     }
 
     /// By certified signs, as `proved_same_distance_function`.
     fn proved_same_point(p: [&Self; 2], q: [&Self; 2]) -> bool {
-        (0..2).all(|i| (p[i].clone() - q[i]).proved_sign() == Some(Sign::Zero))
+        (0..2).all(|i| CertifiedSign::proved_sign(&(p[i].clone() - q[i])) == Some(Sign::Zero))
     }
 
     /// Certified, as [`Scalar::same_distance_function`]: in a flat region the image is one
