@@ -687,40 +687,40 @@ mod tests {
     /// a zero, or a sign near one: the arguments that go around an unproved sign must give what
     /// the exact signs give.
     #[derive(Clone, Debug)]
-    struct ZeroUnproved(Q);
+    struct NearZeroUnproved(Q);
 
     macro_rules! delegate {
         ($($tr:ident $f:ident),*) => {$(
-            impl std::ops::$tr for ZeroUnproved {
-                type Output = ZeroUnproved;
-                fn $f(self, other: ZeroUnproved) -> ZeroUnproved {
-                    ZeroUnproved(std::ops::$tr::$f(self.0, &other.0))
+            impl std::ops::$tr for NearZeroUnproved {
+                type Output = NearZeroUnproved;
+                fn $f(self, other: NearZeroUnproved) -> NearZeroUnproved {
+                    NearZeroUnproved(std::ops::$tr::$f(self.0, &other.0))
                 }
             }
-            impl<'a> std::ops::$tr<&'a ZeroUnproved> for ZeroUnproved {
-                type Output = ZeroUnproved;
-                fn $f(self, other: &'a ZeroUnproved) -> ZeroUnproved {
-                    ZeroUnproved(std::ops::$tr::$f(self.0, &other.0))
+            impl<'a> std::ops::$tr<&'a NearZeroUnproved> for NearZeroUnproved {
+                type Output = NearZeroUnproved;
+                fn $f(self, other: &'a NearZeroUnproved) -> NearZeroUnproved {
+                    NearZeroUnproved(std::ops::$tr::$f(self.0, &other.0))
                 }
             }
         )*};
     }
     delegate!(Add add, Sub sub, Mul mul, Div div);
 
-    impl std::ops::Neg for ZeroUnproved {
-        type Output = ZeroUnproved;
-        fn neg(self) -> ZeroUnproved {
-            ZeroUnproved(-self.0)
+    impl std::ops::Neg for NearZeroUnproved {
+        type Output = NearZeroUnproved;
+        fn neg(self) -> NearZeroUnproved {
+            NearZeroUnproved(-self.0)
         }
     }
 
-    impl Ring for ZeroUnproved {
+    impl Ring for NearZeroUnproved {
         fn from_f64(x: f64) -> Self {
-            ZeroUnproved(Q::from_f64(x))
+            NearZeroUnproved(Q::from_f64(x))
         }
     }
 
-    impl CertifiedSign for ZeroUnproved {
+    impl CertifiedSign for NearZeroUnproved {
         const ALWAYS_ANSWERS: bool = true;
 
         fn certified_sign(&self) -> Option<Sign> {
@@ -793,12 +793,12 @@ mod tests {
             let (lo, hi) = (Q::from_f64(0.0), Q::from_f64(f64::from(hi) / 4.0));
             let exact = crossings(&a, &b, &lo, &hi, &InT, [false, false]);
             let hide = |d: &SourceDistance<Q>| SourceDistance {
-                x: ZeroUnproved(d.x.clone()),
-                y: ZeroUnproved(d.y.clone()),
-                sigma: ZeroUnproved(d.sigma.clone()),
+                x: NearZeroUnproved(d.x.clone()),
+                y: NearZeroUnproved(d.y.clone()),
+                sigma: NearZeroUnproved(d.sigma.clone()),
             };
             let (ha, hb) = (hide(&a), hide(&b));
-            let (hlo, hhi) = (ZeroUnproved(lo.clone()), ZeroUnproved(hi.clone()));
+            let (hlo, hhi) = (NearZeroUnproved(lo.clone()), NearZeroUnproved(hi.clone()));
             let argued = crossings(&ha, &hb, &hlo, &hhi, &InT, [false, false]);
             prop_assert_eq!(reading(argued, |v| v.0.clone()), reading(exact, Q::clone));
         }
