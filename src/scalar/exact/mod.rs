@@ -523,12 +523,12 @@ impl CertifiedSign for Real {
         Some(sign)
     }
 
+    const ALWAYS_ANSWERS: bool = true;
+
     /// The sign where it is certified, counted as a decision; `None`, and no decision, where it
     /// is not. For questions about structure, where `no` only leaves the values to compare: a
     /// tie of two images built along different chains of faces is often proved here by a normal
     /// form or a separation bound, beyond what the first stages settle.
-    const ALWAYS_ANSWERS: bool = true;
-
     fn proved_sign(&self) -> Option<Sign> {
         let (sign, certificate) = self
             .clear_certified_sign()
