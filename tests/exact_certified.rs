@@ -291,6 +291,40 @@ fn mirror_roots_at_a_saddle_s_end_are_certified_and_agree_with_f64() {
     }
 }
 
+/// A Delaunay terrain (`tests/data/delaunay_terrain.py`): random points, irregular valences,
+/// a noisy height field, coordinates with 6 decimals. No symmetry, flat region or collinear
+/// rim for the engine's structure to lean on; every decision is certified, and every distance
+/// lies between the straight line in space and the shortest path along the edges.
+#[test]
+fn a_random_delaunay_terrain_is_certified_and_bounded_by_independent_distances() {
+    let file = "delaunay_terrain.obj";
+    let mesh = common::data_mesh(file);
+    for source in [0, 137] {
+        let case = format!("{file} v{source}");
+        let point = SurfacePoint::Vertex(VertexId(source));
+        let exact = propagate::<Real>(&mesh, &[point], &PropagateOptions::default())
+            .expect("a vertex source");
+        let counts = &exact.stats().backend;
+        assert!(
+            exact.is_certified() && counts.uncertified == 0,
+            "{case}: {} of {} decisions uncertified",
+            counts.uncertified,
+            counts.decisions
+        );
+        assert_agrees_with_f64(&mesh, point, &exact, &case);
+        let graph = common::edge_graph_dijkstra(&mesh, source as usize);
+        for v in 0..mesh.vertex_count() as u32 {
+            let d = exact.vertex_distance(VertexId(v));
+            let line = common::straight(&mesh, source, v);
+            assert!(
+                d >= line * (1.0 - 1e-12) && d <= graph[v as usize] * (1.0 + 1e-12),
+                "{case}: vertex {v} at {d}, straight line {line}, edge graph {}",
+                graph[v as usize]
+            );
+        }
+    }
+}
+
 /// cad_featuretype.obj of the shared models (skipped where absent), whose hole walls are
 /// vertical below straight rims subdivided into collinear vertices: from v0, two rim
 /// pseudo-sources level above a wall edge (the slope of `q2 - beta^2` at a root), apexes on
