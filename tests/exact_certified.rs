@@ -272,6 +272,23 @@ fn revolved_primitives_from_rim_vertices_are_certified_and_agree_with_f64() {
     }
 }
 
+/// trimesh's 64-section cone (`tests/data/revolved_primitives.py`), exactly symmetric under a
+/// half turn about its axis as written with 8 decimals: from a rim vertex, the source's images
+/// brought round the apex's fan both ways meet on the apex's edges as one point (the same
+/// corners in the opposite order), a tie of eq. (2) (`A = B = C = 0`) that no normal form
+/// within its limits reaches (4 decisions uncertified from each source before images through
+/// congruent strips were one expression). The same holds round the poles of trimesh's uv
+/// sphere and capsule (32 sections).
+#[test]
+fn images_brought_round_a_symmetric_fan_both_ways_are_one_point() {
+    let file = "cone64.obj";
+    let mesh = common::data_mesh(file);
+    for source in [33, 65] {
+        let source = SurfacePoint::Vertex(VertexId(source));
+        assert_certified_and_agrees_with_f64(&mesh, source, &format!("{file} {source:?}"));
+    }
+}
+
 /// Spiky icospheres (`tests/data/spiky_icosphere.py`): a vertex reached straight through a
 /// saddle vertex next to it has its wedges meet, on an edge ending at the saddle, the wedge that
 /// lit the saddle, and eq. (2) has a mirror root exactly at that end (the vertex's distance is

@@ -18,6 +18,7 @@
 //! number types that keep values, on meshes where a chain of faces fixes its strip: every
 //! source a vertex, and no degenerate faces or edges with more than two faces.
 
+use super::planar::Planar;
 use super::source::SurfacePoint;
 use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
 use crate::scalar::exact::squared_distance;
@@ -85,6 +86,22 @@ impl Path {
         self.then(Step::Vertex(v.0))
     }
 
+    /// The steps since the path last passed a vertex (the pseudo-source of its last segment),
+    /// that vertex first.
+    fn last_segment(&self) -> Vec<Step> {
+        let mut steps = Vec::new();
+        let mut at = Some(self);
+        while let Some(Path(link)) = at {
+            steps.push(link.step);
+            if let Step::Vertex(_) = link.step {
+                break;
+            }
+            at = link.before.as_ref();
+        }
+        steps.reverse();
+        steps
+    }
+
     /// The steps, first to last.
     fn steps(&self) -> Vec<Step> {
         let mut steps = Vec::new();
@@ -104,6 +121,8 @@ pub(crate) struct CongruentPaths<S> {
     /// The class of each edge: edges of one class have equal exact lengths.
     classes: Vec<u32>,
     lengths: HashMap<Vec<u32>, S>,
+    /// One image per edge and pair of strip descriptions (see [`CongruentPaths::image`]).
+    images: HashMap<(EdgeId, [Vec<u32>; 2]), Planar<S>>,
 }
 
 /// Separates the segments of a key.
@@ -134,6 +153,7 @@ impl<S: Scalar> CongruentPaths<S> {
         Some(CongruentPaths {
             classes,
             lengths: HashMap::new(),
+            images: HashMap::new(),
         })
     }
 
@@ -144,6 +164,33 @@ impl<S: Scalar> CongruentPaths<S> {
         match self.key(mesh, path) {
             Some(key) => self.lengths.entry(key).or_insert_with(length).clone(),
             None => length(),
+        }
+    }
+
+    /// The image `at`, in the frame of edge `e` (from its end `ends[0]` to `ends[1]`), of the
+    /// pseudo-source that `path` last passed, seen through the faces the path crossed since:
+    /// the expression of an image met before on `e` whose strips to the edge's two ends have
+    /// the same descriptions, or `at`, kept for those to come. The two strips fix the
+    /// pseudo-source's distances from the edge's ends in the unfolding, so the image up to
+    /// its mirror across the edge's line, which the frame does not tell (`y` is a distance
+    /// from it). So an image brought round a vertex both ways on a mesh with a symmetry (the
+    /// same corners in the opposite order) is one expression, a tie no normal form reaches.
+    pub(crate) fn image(
+        &mut self,
+        mesh: &TriMesh,
+        (e, ends): (EdgeId, [VertexId; 2]),
+        path: &Path,
+        at: Planar<S>,
+    ) -> Planar<S> {
+        let steps = path.last_segment();
+        let key = ends.map(|v| {
+            let mut to = steps.clone();
+            to.push(Step::Vertex(v.0));
+            self.segment(mesh, &to)
+        });
+        match key {
+            [Some(a), Some(b)] => self.images.entry((e, [a, b])).or_insert(at).clone(),
+            _ => at,
         }
     }
 

@@ -388,8 +388,23 @@ impl<'m, S: Scalar> Engine<'m, S> {
     }
 
     /// Inserts a wedge on its edge, intersecting it with the wedges there.
-    fn insert(&mut self, w: Wedge<S>, kept: Provenance<S>) {
+    fn insert(&mut self, mut w: Wedge<S>, kept: Provenance<S>) {
         let e = w.edge;
+        // One expression for images through congruent strips (see `paths.rs`); in a flat
+        // region the region's frame is the image's construction (see `flat_region.rs`).
+        if let (Some(paths), Some(path), None) = (
+            self.paths.as_mut(),
+            S::kept(&kept.path),
+            S::kept(&kept.image),
+        ) {
+            let at = Planar {
+                x: w.source_x,
+                y: w.source_y,
+            };
+            let edge = (e, self.unfolding.ends(self.mesh, e));
+            let image = paths.image(self.mesh, edge, &path, at);
+            (w.source_x, w.source_y) = (image.x, image.y);
+        }
         if let (Some(offered), Some(strip)) = (self.offered.as_mut(), S::kept(&kept.strip)) {
             let p = match w.pseudo_source {
                 PseudoSource::Vertex(v) => Some(v),
