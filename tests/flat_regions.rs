@@ -57,3 +57,39 @@ fn flat_grid_keeps_few_wedges_per_edge_in_exact() {
         assert!(most <= FEW, "grid {n}: {most} wedges on one edge");
     }
 }
+
+/// A vertex at the origin whose star folds along the x axis: on one side the plane `z = 0`
+/// (`y > 0`, two corners off the axis, the second lifted by `lift`), on the other the
+/// half-plane through the x axis and `(0.2, -1, 1)`. Its neighbours `p`, `q` lie on the x axis
+/// unless `bend` moves `p` off it; `fold` is the height of the other side (0: flat).
+fn folded_star(bend: f64, lift: f64, fold: f64) -> exact_geodesics::TriMesh {
+    exact_geodesics::TriMesh::new(
+        vec![
+            [0.0, 0.0, 0.0],
+            [1.0, bend, 0.0],
+            [0.5, 1.0, 0.0],
+            [-0.5, 1.0, lift],
+            [-1.0, 0.0, 0.0],
+            [0.2, -1.0, fold],
+        ],
+        vec![[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 5], [0, 5, 1]],
+    )
+    .expect("a usable mesh")
+}
+
+/// A vertex on a straight crease between two exactly flat sides has an angle sum of exactly
+/// 2 pi: it is not flat (its faces are in two planes) and is a crease vertex; bending the
+/// crease line or lifting a face off its side's plane makes it neither. Unfolded flat, the
+/// same star is a flat vertex.
+#[test]
+fn a_vertex_on_a_straight_crease_is_told_exactly() {
+    let v = VertexId(0);
+    let crease = folded_star(0.0, 0.0, 1.0);
+    assert!(crease.is_crease_vertex(v) && !crease.is_flat_vertex(v));
+    for (bend, lift) in [(1e-15, 0.0), (0.0, 1e-15), (0.25, 0.0)] {
+        let mesh = folded_star(bend, lift, 1.0);
+        assert!(!mesh.is_crease_vertex(v), "bend {bend}, lift {lift}");
+    }
+    let flat = folded_star(0.0, 0.0, 0.0);
+    assert!(flat.is_flat_vertex(v) && !flat.is_crease_vertex(v));
+}

@@ -263,6 +263,31 @@ impl TriMesh {
         self.topology.flat_vertex[v.index()]
     }
 
+    /// Whether the vertex lies on a straight crease: an interior vertex with two neighbours on
+    /// one line through it, the faces on each side of that line exactly in one plane. Its
+    /// angle sum is exactly 2 pi, so no geodesic bends there; decided exactly on the input
+    /// coordinates by orient3d and orient2d, when asked (only exact runs ask, so loading a
+    /// mesh does not pay for it).
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
+    pub fn is_crease_vertex(&self, v: VertexId) -> bool {
+        let i = v.index();
+        let t = &self.topology;
+        let flat_angle =
+            (t.angle_sum[i] - std::f64::consts::TAU).abs() < std::f64::consts::FRAC_PI_2;
+        if t.boundary_vertex[i] || t.on_degenerate_face[i] || t.flat_vertex[i] || !flat_angle {
+            return false;
+        }
+        let corners: Vec<[u32; 3]> = self
+            .vertex_faces(v)
+            .iter()
+            .map(|&f| self.face(f).map(|c| c.0))
+            .collect();
+        let scale = t.unit_scale;
+        topology::straight_crease(i, &corners, |u| self.positions()[u] * scale)
+    }
+
     /// The power of two by which the engine multiplies coordinates so that its arithmetic
     /// stays in range whatever the model's units: 1 unless the largest coordinate magnitude
     /// lies outside `2^-64 ..= 2^64`. Multiplying by it is exact (but for subnormals, which

@@ -190,6 +190,74 @@ fn flat_star(
         })
 }
 
+/// Whether interior vertex `v` lies on a straight crease: two neighbours `p`, `q` on one line
+/// through it, `v` between them, and the faces of its star on each side of that line (`faces`,
+/// its star) flat with the line as their straight boundary ([`flat_star`]). Each side then
+/// spans an angle of exactly pi, the star 2 pi: the surface is intrinsically flat at `v`, and no
+/// geodesic bends there. Decided exactly on the input coordinates: collinear in 3D is
+/// collinear in each coordinate plane.
+pub(super) fn straight_crease(v: usize, faces: &[[u32; 3]], at: impl Fn(usize) -> DVec3) -> bool {
+    let mut neighbours: Vec<u32> = faces
+        .iter()
+        .flatten()
+        .copied()
+        .filter(|&c| c as usize != v)
+        .collect();
+    neighbours.sort_unstable();
+    neighbours.dedup();
+    let centre = at(v);
+    let collinear = |p: DVec3, q: DVec3| {
+        let c = |a: f64, b: f64| robust::Coord { x: a, y: b };
+        [(0, 1), (1, 2), (2, 0)].iter().all(|&(i, j)| {
+            robust::orient2d(c(p[i], p[j]), c(centre[i], centre[j]), c(q[i], q[j])) == 0.0
+        })
+    };
+    let between = |p: DVec3, q: DVec3| {
+        (0..3).any(|i| {
+            (p[i] < centre[i] && centre[i] < q[i]) || (q[i] < centre[i] && centre[i] < p[i])
+        })
+    };
+    for (k, &p) in neighbours.iter().enumerate() {
+        for &q in &neighbours[k + 1..] {
+            let (pp, qq) = (at(p as usize), at(q as usize));
+            if !(collinear(pp, qq) && between(pp, qq)) {
+                continue;
+            }
+            // The two sides: faces joined across the star's edges other than (v, p), (v, q).
+            let mut sides = UnionFind::new(faces.len());
+            for i in 0..faces.len() {
+                for j in i + 1..faces.len() {
+                    let shared = faces[i]
+                        .iter()
+                        .filter(|&&c| c as usize != v && c != p && c != q && faces[j].contains(&c))
+                        .count();
+                    if shared > 0 {
+                        sides.union(i as u32, j as u32);
+                    }
+                }
+            }
+            let roots: Vec<u32> = (0..faces.len() as u32).map(|i| sides.find(i)).collect();
+            let mut distinct = roots.clone();
+            distinct.sort_unstable();
+            distinct.dedup();
+            if distinct.len() != 2 {
+                continue;
+            }
+            let straight = Some([pp, centre, qq]);
+            if distinct.iter().all(|&r| {
+                let side: Vec<[u32; 3]> = (0..faces.len())
+                    .filter(|&i| roots[i] == r)
+                    .map(|i| faces[i])
+                    .collect();
+                flat_star(v, &side, &at, straight)
+            }) {
+                return true;
+            }
+        }
+    }
+    false
+}
+
 /// Whether a triangle (in unit-scaled coordinates) is degenerate for the f64 geometry: its
 /// corners collinear to within rounding, or two of them coincident. The sine of its largest
 /// angle is then below a few ulps, and an unfolding computed in f64 across it means little.

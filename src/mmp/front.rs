@@ -3,6 +3,7 @@
 //! and the best known distance of every vertex.
 
 use super::paths::Path;
+use super::provenance::keeps_values;
 use super::source::SurfacePoint;
 use super::unfold::Unfolding;
 use super::wedge::{Wedge, WedgeFields};
@@ -206,7 +207,12 @@ impl<S: Scalar> Front<S> {
             source,
             path,
         });
-        if mesh.may_bend_geodesics(v) {
+        // A vertex on a straight crease bends no geodesic (its angle sum is exactly 2 pi);
+        // number types that keep values prove the ties of the images passing it on either
+        // side by structure (`crease.rs`) rather than meeting its own wedges there. Rounding
+        // types keep it as a pseudo-source, which covers the shadow line behind it whatever
+        // the images' rounding.
+        if mesh.may_bend_geodesics(v) && !(keeps_values::<S>() && mesh.is_crease_vertex(v)) {
             self.pending_emission[v.index()] = true;
             self.queue.push(Event::new(approx, EventKind::Vertex(v)));
         }
