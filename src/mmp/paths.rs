@@ -1,4 +1,5 @@
-//! Ties proved by congruence: one expression for the lengths of congruent paths.
+//! Ties proved by congruence: one expression for the lengths of congruent paths, and for the
+//! images seen through congruent strips.
 //!
 //! A distance that a wedge gives a vertex is the length of a path of straight segments in
 //! unfoldings: from the source through a chain of faces to the first pseudo-source, and on
@@ -14,9 +15,12 @@
 //! [`CongruentPaths`] describes each segment's strip by the classes of its sides' exact squared
 //! lengths, keys a vertex distance by its segments' least descriptions (forwards or backwards,
 //! either way round), and hands out one expression per key, so that those ties are zeros by
-//! structure. A path is a sum of its segments, so their order does not matter. Kept only by
-//! number types that keep values, on meshes where a chain of faces fixes its strip: every
-//! source a vertex, and no degenerate faces or edges with more than two faces.
+//! structure. A path is a sum of its segments, so their order does not matter. The same keys
+//! fix a wedge's image on its edge: the strips of its last segment to the edge's two ends give
+//! the image's distances from them, so wedges whose pairs of keys agree share one image
+//! ([`CongruentPaths::image`]), as images brought round a vertex both ways on a symmetric mesh
+//! do. Kept only by number types that keep values, on meshes where a chain of faces fixes its
+//! strip: every source a vertex, and no degenerate faces or edges with more than two faces.
 
 use super::planar::Planar;
 use super::source::SurfacePoint;
