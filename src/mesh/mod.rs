@@ -288,6 +288,16 @@ impl TriMesh {
         topology::straight_crease(i, &corners, |u| self.positions()[u] * scale)
     }
 
+    /// Whether three vertices lie on one line in space, decided exactly on the input
+    /// coordinates.
+    ///
+    /// # Panics
+    /// If one of them is not a vertex of the mesh.
+    pub fn are_collinear(&self, vertices: [VertexId; 3]) -> bool {
+        let scale = self.topology.unit_scale;
+        topology::collinear(vertices.map(|v| self.positions()[v.index()] * scale))
+    }
+
     /// The power of two by which the engine multiplies coordinates so that its arithmetic
     /// stays in range whatever the model's units: 1 unless the largest coordinate magnitude
     /// lies outside `2^-64 ..= 2^64`. Multiplying by it is exact (but for subnormals, which

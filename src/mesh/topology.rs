@@ -190,6 +190,15 @@ fn flat_star(
         })
 }
 
+/// Whether three points lie on one line: collinear in space is collinear in each coordinate
+/// plane, decided exactly by orient2d.
+pub(super) fn collinear([p, q, r]: [DVec3; 3]) -> bool {
+    let c = |a: f64, b: f64| robust::Coord { x: a, y: b };
+    [(0, 1), (1, 2), (2, 0)]
+        .iter()
+        .all(|&(i, j)| robust::orient2d(c(p[i], p[j]), c(q[i], q[j]), c(r[i], r[j])) == 0.0)
+}
+
 /// Whether interior vertex `v` lies on a straight crease: two neighbours `p`, `q` on one line
 /// through it, `v` between them, and the faces of its star on each side of that line (`faces`,
 /// its star) flat with the line as their straight boundary ([`flat_star`]). Each side then
@@ -206,12 +215,6 @@ pub(super) fn straight_crease(v: usize, faces: &[[u32; 3]], at: impl Fn(usize) -
     neighbours.sort_unstable();
     neighbours.dedup();
     let centre = at(v);
-    let collinear = |p: DVec3, q: DVec3| {
-        let c = |a: f64, b: f64| robust::Coord { x: a, y: b };
-        [(0, 1), (1, 2), (2, 0)].iter().all(|&(i, j)| {
-            robust::orient2d(c(p[i], p[j]), c(centre[i], centre[j]), c(q[i], q[j])) == 0.0
-        })
-    };
     let between = |p: DVec3, q: DVec3| {
         (0..3).any(|i| {
             (p[i] < centre[i] && centre[i] < q[i]) || (q[i] < centre[i] && centre[i] < p[i])
@@ -220,7 +223,7 @@ pub(super) fn straight_crease(v: usize, faces: &[[u32; 3]], at: impl Fn(usize) -
     for (k, &p) in neighbours.iter().enumerate() {
         for &q in &neighbours[k + 1..] {
             let (pp, qq) = (at(p as usize), at(q as usize));
-            if !(collinear(pp, qq) && between(pp, qq)) {
+            if !(collinear([pp, centre, qq]) && between(pp, qq)) {
                 continue;
             }
             // The two sides: faces joined across the star's edges other than (v, p), (v, q).

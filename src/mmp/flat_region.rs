@@ -18,6 +18,7 @@ use super::unfold::Apex;
 use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
 use crate::scalar::{Scalar, Sign};
 use std::collections::HashMap;
+use std::sync::Arc;
 
 /// The first edge (by id) between two regions, its faces in the region left and in the region
 /// entered, and the unfolding across it.
@@ -33,6 +34,20 @@ pub(crate) struct RegionImage<S> {
     pub(crate) region: u32,
     /// The image in the region's frame.
     pub(crate) point: RegionPoint<S>,
+    /// The image it was carried from across a crease, and the edge of the crease it crossed
+    /// (see [`FlatRegions::distance`]).
+    pub(crate) carried: Option<Arc<(EdgeId, RegionImage<S>)>>,
+}
+
+impl<S> RegionImage<S> {
+    /// An image first placed in `region`'s frame.
+    pub(crate) fn new(region: u32, point: RegionPoint<S>) -> Self {
+        RegionImage {
+            region,
+            point,
+            carried: None,
+        }
+    }
 }
 
 /// The flat regions of a mesh and the frame of each.
@@ -273,9 +288,9 @@ impl<S: Scalar> FlatRegions<S> {
         }
     }
 
-    /// The region point of a point entering face `f` across its edge `e` (of length `length`):
-    /// `at` in the edge's frame, `at.y` measured on the side away from `f` (where the
-    /// pseudo-sources of the wedges entering `f` across `e` lie), and `kept` the point in the
+    /// The image of a point entering face `f` across its edge `e` (of length `length`): `at`
+    /// in the edge's frame, `at.y` measured on the side away from `f` (where the
+    /// pseudo-sources of the wedges entering `f` across `e` lie), and `kept` the image in the
     /// frame of the region it comes from, if it does. The same point wherever it comes from
     /// in the region it is in, or across the line that region shares with `f`'s (see
     /// `crease.rs`), gets one expression.
@@ -286,16 +301,38 @@ impl<S: Scalar> FlatRegions<S> {
         length: &S,
         at: &Planar<S>,
         kept: Option<&RegionImage<S>>,
-    ) -> RegionPoint<S> {
+    ) -> RegionImage<S> {
         let region = self.face_region[f.index()].expect("a face of a region");
-        match kept {
-            Some(image) if image.region == region => image.point.clone(),
-            Some(image) => self.creases.get(&(e, image.region)).map_or_else(
-                || self.entering(mesh, (e, f), length, at),
-                |crease| crease.apply(&image.point),
-            ),
-            None => self.entering(mesh, (e, f), length, at),
+        let crease = kept.and_then(|image| Some((image, self.creases.get(&(e, image.region))?)));
+        match (kept, crease) {
+            (Some(image), _) if image.region == region => image.clone(),
+            (_, Some((image, crease))) => RegionImage {
+                region,
+                point: crease.apply(&image.point),
+                carried: Some(Arc::new((e, image.clone()))),
+            },
+            _ => RegionImage::new(region, self.entering(mesh, (e, f), length, at)),
         }
+    }
+
+    /// The distance from an image to a corner `v` of its region. A crease fixes its line point
+    /// by point, so where the image was carried across creases whose lines pass through `v`,
+    /// the distance is the same in the regions it came from; it is measured in the first of
+    /// them. The images of one point that reach `v` from either side of a crease through it
+    /// (around a vertex on a CAD model's feature line) then give it one expression.
+    pub(crate) fn distance(&self, mesh: &TriMesh, image: &RegionImage<S>, v: VertexId) -> S {
+        let mut at = image;
+        while let Some(carried) = &at.carried {
+            let (e, before) = &**carried;
+            let [a, b] = mesh.edge(*e).vertices;
+            if !(self.corners.contains_key(&(before.region, v)) && mesh.are_collinear([a, b, v])) {
+                break;
+            }
+            at = before;
+        }
+        let (p, q) = (&at.point, self.corner(at.region, v));
+        let (dx, dy) = (q[0].clone() - &p[0], q[1].clone() - &p[1]);
+        (dx.clone() * dx + dy.clone() * dy).sqrt()
     }
 
     /// The region point of a point in the frame of edge `e` (of length `length`), `at.y`

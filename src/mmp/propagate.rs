@@ -602,13 +602,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
             }
             let ends = self.unfolding.ends(mesh, g).map(to);
             // In a flat region, the vertex itself in the region's frame (see `flat_region.rs`).
-            let image = self
-                .unfolding
-                .flat_region(f)
-                .map(|(regions, region)| RegionImage {
-                    region,
-                    point: regions.corner(region, v).clone(),
-                });
+            let image = self.unfolding.flat_region(f).map(|(regions, region)| {
+                RegionImage::new(region, regions.corner(region, v).clone())
+            });
             let across = continued::<S>(&path, |p| p.across(f));
             let strip = self.start_strip((v, &path), g, Some(f));
             let kept = (Some(ends), image, across, strip);
@@ -734,10 +730,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
         );
         let apex_distance = || {
             let straight = match (flat, &image) {
-                (Some((regions, region)), Some(p)) => {
-                    let a = regions.corner(region, layout.apex_vertex());
-                    let (dx, dy) = (a[0].clone() - &p[0], a[1].clone() - &p[1]);
-                    (dx.clone() * dx + dy.clone() * dy).sqrt()
+                (Some((regions, _)), Some(image)) => {
+                    regions.distance(mesh, image, layout.apex_vertex())
                 }
                 _ => layout.apex_distance(&s),
             };
@@ -765,7 +759,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
         // comparing a constructed shadow with the range's end.
         let ends = self.unfolding.ends(mesh, w.edge);
         let shadow_at_vertex = |i: usize| match (flat, &image) {
-            (Some((regions, region)), Some(p)) => {
+            (Some((regions, region)), Some(image)) => {
+                let p = &image.point;
                 let v = regions.corner(region, ends[i]);
                 let a = regions.corner(region, layout.apex_vertex());
                 S::orientation([&p[0], &p[1]], [&v[0], &v[1]], [&a[0], &a[1]]) == Sign::Zero
@@ -791,11 +786,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let anchor_on = |g: EdgeId, i: usize, to: &dyn Fn(&Planar<S>) -> Planar<S>| {
             // A point kept with the anchor, in `g`'s frame and the region's.
             let carry = |point: &Planar<S>, image: Option<&RegionImage<S>>| {
-                let Some((regions, region)) = flat else {
+                let Some((regions, _)) = flat else {
                     return (to(point), None);
                 };
-                let point = regions.image_entering(mesh, (w.edge, face), length, point, image);
-                let image = RegionImage { region, point };
+                let image = regions.image_entering(mesh, (w.edge, face), length, point, image);
                 let length_g = self.unfolding.length(g);
                 let at = regions.to_edge(mesh, (g, face), length_g, &image.point);
                 (at, Some(image))
@@ -819,9 +813,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let distance = S::kept(&kept.at_ends[i])?;
             let point = self.unfolding.apex_point(mesh, g, mesh.side_of(g, face)?)?;
             let vertex = self.unfolding.ends(mesh, w.edge)[i];
-            let image = flat.map(|(regions, region)| RegionImage {
-                region,
-                point: regions.corner(region, vertex).clone(),
+            let image = flat.map(|(regions, region)| {
+                RegionImage::new(region, regions.corner(region, vertex).clone())
             });
             Some(Anchor {
                 point,
@@ -835,15 +828,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let to_far = |p: &Planar<S>| layout.to_far(p);
         // The pseudo-source in the frame of a child's edge, and its image kept for the next face.
         let source_on = |g: EdgeId, to: &dyn Fn(&Planar<S>) -> Planar<S>| match (flat, &image) {
-            (Some((regions, region)), Some(p)) => {
-                let at = regions.to_edge(mesh, (g, face), self.unfolding.length(g), p);
-                (
-                    at,
-                    Some(RegionImage {
-                        region,
-                        point: p.clone(),
-                    }),
-                )
+            (Some((regions, _)), Some(image)) => {
+                let at = regions.to_edge(mesh, (g, face), self.unfolding.length(g), &image.point);
+                (at, Some(image.clone()))
             }
             _ => (to(&s), None),
         };
