@@ -137,15 +137,43 @@ impl<S: Scalar> FlatRegions<S> {
         let mut regions: Vec<Vec<FaceId>> = members.into_values().filter(|m| m.len() > 1).collect();
         regions.sort_by_key(|m| m[0]);
         for (r, faces) in regions.iter().enumerate() {
+            for &f in faces {
+                face_region[f.index()] = Some(r as u32);
+            }
+        }
+        // Whether an edge joins a face of region `r` to a face of another region.
+        let on_crease = |e: EdgeId, r: u32| {
+            let mut sides = mesh.edge_faces(e).map(|f| face_region[f.index()]);
+            match (sides.next(), sides.next(), sides.next()) {
+                (Some(Some(a)), Some(Some(b)), None) => a != b && (a == r || b == r),
+                _ => false,
+            }
+        };
+        for (r, faces) in regions.iter().enumerate() {
             let r = r as u32;
-            // The frame: origin at the first face's first corner, x along its first edge, y
-            // turned from it about the face's normal (so the faces run counterclockwise).
-            let [a, b, _] = mesh.face(faces[0]).map(|v| &points[v.index()]);
+            // The frame: x along the region's first edge (by id) on a crease, from its first
+            // end, else along the first face's first edge; y turned from it about the face's
+            // normal (so the faces run counterclockwise). On a band of strips between parallel
+            // creases (an extrusion's walls, a cylinder's columns) every x axis then runs along
+            // the creases: unfolding across one is a reflection and a shift by rational data,
+            // and an image carried along the band keeps a coordinate that is a sum of the
+            // strips' widths, whose square has a root in the tower.
+            let crease = faces
+                .iter()
+                .flat_map(|&f| mesh.face_edges(f))
+                .filter(|&e| on_crease(e, r))
+                .min();
+            let [a, b] = match crease {
+                Some(e) => mesh.edge(e).vertices.map(|v| &points[v.index()]),
+                None => {
+                    let [a, b, _] = mesh.face(faces[0]).map(|v| &points[v.index()]);
+                    [a, b]
+                }
+            };
             let (origin, u) = (a.clone(), sub(b, a));
             let w = cross(&normal(faces[0]), &u);
             let (u_norm, w_norm) = (dot(&u, &u).sqrt(), dot(&w, &w).sqrt());
             for &f in faces {
-                face_region[f.index()] = Some(r);
                 for v in mesh.face(f) {
                     corners.entry((r, v)).or_insert_with(|| {
                         let d = sub(&points[v.index()], &origin);

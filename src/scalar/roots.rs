@@ -150,7 +150,17 @@ pub(crate) fn same_distance_function_by<T: CertifiedSign>(
     sign: impl Fn(&T) -> Option<Sign>,
 ) -> Option<bool> {
     let eq2 = Eq2Coefficients::new(a, b, &a.x);
-    for c in [&eq2.a, &eq2.b, &eq2.c] {
+    let coefficients = [&eq2.a, &eq2.b, &eq2.c];
+    // One coefficient clearly non-zero answers, before a zero of another is sought: two
+    // images on one line through a pseudo-source (on a band of strips, along its rim) have
+    // `B = 0` only by that line, which no normal form of theirs shows.
+    if coefficients
+        .iter()
+        .any(|c| matches!(c.clear_sign(), Some(Sign::Positive | Sign::Negative)))
+    {
+        return Some(false);
+    }
+    for c in coefficients {
         if sign(c)? != Sign::Zero {
             return Some(false);
         }

@@ -335,8 +335,10 @@ impl NormalForm {
 /// the level below.
 const ROOT_DEPTH: u32 = 4;
 
-/// Radicands with more terms than this are not searched for a root in the tower.
-const ROOT_TERMS: usize = 64;
+/// Radicands with more terms than this are not searched for a root in the tower. The square of
+/// a sum of `k` radicals of distinct classes has `1 + k (k - 1) / 2` terms: a straight line
+/// along 23 strips of distinct widths (a cylinder's columns) still has its root found.
+const ROOT_TERMS: usize = 256;
 
 impl NormalForm {
     /// An enclosure of the value, from the enclosures of the symbols.
