@@ -414,19 +414,15 @@ fn open_cylinders_are_certified_and_unroll_to_a_rectangle() {
 /// difference), images across its straight creases and ends on shadow lines (stop 26), and a
 /// root of eq. (2) with L of the wrong sign at the end of a range (a tangency with a mirror
 /// image), and mirror roots of eq. (2) at a range's end. Those left 249 of its decisions
-/// uncertified at stop 24, 7 at stop 25 and 3 at stop 26; the one left (named in the notes) is
-/// another class, so this is a bound, and the distances agree with f64.
+/// uncertified at stop 24, 7 at stop 25, 3 at stop 26 and 1 at stop 28 (gone with the frames
+/// along creases and roots of longer squares); now every decision is certified, and the
+/// distances agree with f64.
 #[test]
 fn a_cad_model_s_walls_below_straight_rims_are_certified() {
     let Some(mesh) = shared_model("cad_featuretype.obj") else {
         return;
     };
-    let options = PropagateOptions::default();
-    let source = [SurfacePoint::Vertex(VertexId(0))];
-    let exact = propagate::<Real>(&mesh, &source, &options).expect("a vertex source");
-    let uncertified = exact.stats().backend.uncertified;
-    assert!(uncertified <= 1, "{uncertified} decisions uncertified");
-    assert_agrees_with_f64(&mesh, source[0], &exact, "cad_featuretype");
+    assert_certified_and_agrees_with_f64(&mesh, SurfacePoint::Vertex(VertexId(0)), "cad v0");
 }
 
 /// fandisk.obj of the shared models (12,946 faces; skipped where absent, about 2 minutes
