@@ -301,10 +301,22 @@ pub(crate) fn crossings<T: CertifiedSign>(
     let sa = (alpha.clone() - &beta)
         .certified_sign()?
         .times((alpha.clone() + &beta).certified_sign()?);
+    let width = hi.clone() - lo;
     // B is asked only when A = 0, C only for A = B = 0: C is often nearly zero (the range
-    // starts where the wedges are nearly equal).
+    // starts where the wedges are nearly equal). With A = 0, eq. (2) is `B u + C`: clearly of
+    // one sign at both ends of the range, it has no root inside whatever B is (two images on
+    // one line through a pseudo-source have B = 0 only by that line, which no normal form
+    // shows).
     let sb = match sa {
-        Sign::Zero => Some(eq2.b.certified_sign()?),
+        Sign::Zero => {
+            let at_end = eq2.c.clone() + &(eq2.b.clone() * &width);
+            match (eq2.c.clear_sign(), at_end.clear_sign()) {
+                (Some(s0), Some(s1)) if s0 != Sign::Zero && s0 == s1 => {
+                    return Some(Crossings::None)
+                }
+                _ => Some(eq2.b.certified_sign()?),
+            }
+        }
         _ => None,
     };
     if sb == Some(Sign::Zero) && eq2.c.certified_sign()? == Sign::Zero {
@@ -313,7 +325,6 @@ pub(crate) fn crossings<T: CertifiedSign>(
     let sbeta = beta.certified_sign()?;
     let alpha_sign = alpha.certified_sign()?;
     let two = T::from_f64(2.0);
-    let width = hi.clone() - lo;
     // q2(u) - beta^2 = u^2 - 2 x2 u + (n2 - beta^2).
     let q2_excess = n2.clone() - &beta2;
     // A single root, known exactly: inside the range, and a solution of eq. (1)? Not inside

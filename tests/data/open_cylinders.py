@@ -1,12 +1,12 @@
-"""Writes open_cylinder_32_6.obj and open_cylinder_48_8.obj (tests/exact_certified.rs): open
-cylinders of radius 1 and height 1.5, 32 and 48 sections (numpy's cos and sin of linspace
-angles) by 6 and 8 rings, each quad split along its diagonal. Every quad is an exact rectangle
+"""Writes open_cylinder_32_6.obj, _48_8.obj and _32_10.obj (tests/exact_certified.rs): open
+cylinders of radius 1 and height 1.5, 32, 48 and 32 sections (numpy's cos and sin of linspace
+angles) by 6, 8 and 10 rings, each quad split along its diagonal. Every quad is an exact rectangle
 (its sides are vertical and horizontal), so the surface is a band of flat strips between
 vertical creases: unrolled, a rectangle whose width is the perimeter of the polygon. Needs
 numpy."""
 import numpy as np
 
-for sections, rings in [(32, 6), (48, 8)]:
+for sections, rings in [(32, 6), (48, 8), (32, 10)]:
     angles = np.linspace(0, 2 * np.pi, sections, endpoint=False)
     heights = np.linspace(0, 1.5, rings)
     with open(f"open_cylinder_{sections}_{rings}.obj", "w") as f:
