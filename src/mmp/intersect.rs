@@ -92,9 +92,11 @@ fn push_cut_piece<S: Scalar>(
 }
 
 /// The smallest value of a distance function on `[lo, hi]` (it is convex, so the foot of the
-/// pseudo-source if inside, else the nearer end).
+/// pseudo-source if inside, else the nearer end), or `sigma + y` below it where the backend
+/// leaves open on which side of an end the foot lies ([`Scalar::foot_within`]): the callers
+/// compare it with a largest value for a bound, which a lower one keeps.
 fn min_on<S: Scalar>(d: &SourceDistance<S>, lo: &S, hi: &S, at_lo: &S, at_hi: &S) -> S {
-    if d.x.compare(lo) == Ordering::Greater && d.x.compare(hi) == Ordering::Less {
+    if S::foot_within(&d.x, lo, hi, false) {
         d.y.clone() + &d.sigma
     } else {
         S::min_of(at_lo, at_hi)

@@ -76,13 +76,15 @@ pub(crate) trait WedgeFields<S> {
     }
 
     /// The smallest distance the wedge gives on its range (its priority [SSK+05 §4]): at the
-    /// foot of the pseudo-source if inside, else at the nearer end (the distance is convex).
+    /// foot of the pseudo-source if inside, else at the nearer end (the distance is convex);
+    /// `sigma + y`, at most below it by the backend's resolution, where the backend leaves the
+    /// foot's side of an end open ([`Scalar::foot_within`]). Read only as a key of the queue.
     fn min_distance(&self) -> S
     where
         S: Scalar,
     {
         let (x, b0, b1) = (self.source_x(), self.b0(), self.b1());
-        if x.compare(b0).is_ge() && x.compare(b1).is_le() {
+        if S::foot_within(x, b0, b1, true) {
             self.sigma().clone() + self.source_y()
         } else {
             let d = self.distance_function();

@@ -195,6 +195,20 @@ pub trait Scalar: Field {
     /// a number type that rounds those constructions evaluates it.
     fn within(x: &Self, lo: &Self, hi: &Self, scale: impl FnOnce() -> Self) -> bool;
 
+    /// Whether the foot `x` of a pseudo-source's image counts as inside the range `[lo, hi]`
+    /// (its ends included if `closed`) when the smallest distance a wedge gives there is sought
+    /// [SSK+05 §4]: `sigma + y` if so, else the distance at the nearer end. With the foot at an
+    /// end the two are one value, so either answer is right there, and a backend that could
+    /// only tell `x = lo` from `x != lo` by a proof of zero answers `true` without one:
+    /// `sigma + y` bounds the smallest distance from below wherever the foot lies.
+    fn foot_within(x: &Self, lo: &Self, hi: &Self, closed: bool) -> bool {
+        if closed {
+            x.compare(lo) != Ordering::Less && x.compare(hi) != Ordering::Greater
+        } else {
+            x.compare(lo) == Ordering::Greater && x.compare(hi) == Ordering::Less
+        }
+    }
+
     /// Whether the point `(x, height)` in the frame of an edge of length `length`, its foot
     /// inside the edge (`0 < x < length`, `height >= 0`), lies on the edge's line: the middle
     /// corner of a degenerate face is then a point of its opposite edge [MMP87]. Exactly

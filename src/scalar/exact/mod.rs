@@ -354,6 +354,25 @@ impl Real {
         })
     }
 
+    /// The order of two values where their filters tell it, counted as a decision; `None`
+    /// otherwise. Values with divisors that may be zero are left to the sign of their
+    /// difference, which checks the divisors first.
+    fn filtered_order(&self, other: &Self) -> Option<Ordering> {
+        if self.0.divisors_unchecked || other.0.divisors_unchecked {
+            return None;
+        }
+        let (a, b) = (self.filter(), other.filter());
+        let order = if a.hi < b.lo {
+            Ordering::Less
+        } else if a.lo > b.hi {
+            Ordering::Greater
+        } else {
+            return None;
+        };
+        audit::record(Certificate::Filter, || [0.0; 2]);
+        Some(order)
+    }
+
     /// An `f64` enclosure of the value (from the filter, or refined when the filter is wide).
     pub fn enclosure(&self) -> [f64; 2] {
         let f = self.0.filter;
@@ -580,19 +599,8 @@ impl Scalar for Real {
     }
 
     fn compare(&self, other: &Self) -> Ordering {
-        let (a, b) = (self.filter(), other.filter());
-        // Values with divisors that may be zero are compared by the sign of their difference,
-        // which checks the divisors first.
-        let filtered = !self.0.divisors_unchecked && !other.0.divisors_unchecked;
-        if filtered && a.hi < b.lo {
-            audit::record(Certificate::Filter, || [0.0; 2]);
-            return Ordering::Less;
-        }
-        if filtered && a.lo > b.hi {
-            audit::record(Certificate::Filter, || [0.0; 2]);
-            return Ordering::Greater;
-        }
-        (self.clone() - other).decide().as_ordering()
+        self.filtered_order(other)
+            .unwrap_or_else(|| (self.clone() - other).decide().as_ordering())
     }
 
     fn compare_distance(&self, other: &Self) -> Ordering {
@@ -605,6 +613,18 @@ impl Scalar for Real {
 
     fn within(x: &Self, lo: &Self, hi: &Self, _scale: impl FnOnce() -> Self) -> bool {
         x.compare(lo) != Ordering::Less && x.compare(hi) != Ordering::Greater
+    }
+
+    /// `false` only where the foot is clearly outside ([`CertifiedSign::clear_sign`]): a foot
+    /// at a range end is no decision.
+    fn foot_within(x: &Self, lo: &Self, hi: &Self, _closed: bool) -> bool {
+        let clearly = |end: &Self, side| {
+            let order = x
+                .filtered_order(end)
+                .or_else(|| CertifiedSign::clear_sign(&(x.clone() - end)).map(Sign::as_ordering));
+            order == Some(side)
+        };
+        !clearly(lo, Ordering::Less) && !clearly(hi, Ordering::Greater)
     }
 
     fn on_line(height: &Self, _x: &Self, _length: &Self) -> bool {
