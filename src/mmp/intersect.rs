@@ -11,7 +11,7 @@
 //! engine's edge lists ([`wedge_lists`](super::wedge_lists)) store the pieces as wedges.
 
 use super::planar::Planar;
-use super::provenance::{compare_ends, range_end, Anchor, Provenance, RangeEnd};
+use super::provenance::{compare_ends, keeps_values, range_end, Anchor, Provenance, RangeEnd};
 use super::stats::{Eq2Counts, Eq2Decision};
 use super::wedge::{PseudoSource, Wedge, WedgeFields};
 use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Lower, Scalar, SourceDistance};
@@ -202,6 +202,12 @@ fn lower_by_anchor<S: Scalar>(
     (new, new_kept): (&Wedge<S>, &Provenance<S>),
     vertices: &[S; 2],
 ) -> Option<Owner> {
+    // Number types that keep no values keep neither anchors nor distances at vertices: the
+    // pairs of empty anchors below were still built and dropped, out of line, for every
+    // overlapped wedge (18.5 % of the f64 engine's instructions on stanford_bunny).
+    if !keeps_values::<S>() {
+        return None;
+    }
     // A wedge's pseudo-source, its image and its distance.
     type Source<'a, S> = (PseudoSource, [&'a S; 3]);
     let old_source = (
