@@ -292,7 +292,9 @@ impl<S: Scalar> Provenance<S> {
     }
 }
 
-/// Whether the number type keeps values ([`Scalar::Kept`]), and wedges their provenance.
+/// Whether the number type keeps values ([`Scalar::Kept`]), and wedges their provenance: a
+/// constant of the number type, folded wherever it is asked.
+#[inline(always)]
 pub(crate) fn keeps_values<S: Scalar>() -> bool {
     S::kept(&S::keep(|| ())).is_some()
 }
