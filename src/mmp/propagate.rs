@@ -784,6 +784,11 @@ impl<'m, S: Scalar> Engine<'m, S> {
         // of the edge into the face (that vertex's shadow line), the vertex: the apex of the
         // face seen from `g`, the very image its own wedges across `g` start from.
         let anchor_on = |g: EdgeId, i: usize, to: &dyn Fn(&Planar<S>) -> Planar<S>| {
+            // Number types that keep no values keep no anchors: for them the anchors stay
+            // empty, known so where the children's provenance is built.
+            if !keeps_values::<S>() {
+                return None;
+            }
             // A point kept with the anchor, in `g`'s frame and the region's.
             let carry = |point: &Planar<S>, image: Option<&RegionImage<S>>| {
                 let Some((regions, _)) = flat else {
