@@ -111,9 +111,12 @@ impl<S: Scalar> Default for Provenance<S> {
 impl<S: Scalar> Provenance<S> {
     /// The provenance of given distances at the edge's vertices and anchors of the range ends.
     pub(crate) fn new(at_ends: [S::Kept<S>; 2], anchors: [Option<Anchor<S>>; 2]) -> Self {
+        // Element by element: `anchors.map` was called out of line even where nothing is kept.
+        let keep = |a: Option<Anchor<S>>| a.map_or_else(Default::default, |a| S::keep(|| a));
+        let [a0, a1] = anchors;
         Provenance {
             at_ends,
-            anchors: anchors.map(|a| a.map_or_else(Default::default, |a| S::keep(|| a))),
+            anchors: [keep(a0), keep(a1)],
             crossings: Default::default(),
             image: Default::default(),
             path: Default::default(),
