@@ -372,6 +372,17 @@ fn a_foot_at_a_range_end_is_no_decision() {
     assert_certified_and_bounded("parametric_torus.obj", &[275]);
 }
 
+/// pyvista's icosahedron with each face split linearly into 16 (`tests/data/
+/// subdivided_icosahedron.py`, float32 coordinates): some of its big faces are exactly flat
+/// regions, where wedges of one image on both sides of a vertex's shadow are joined. The
+/// joined wedge keeps the strip of one piece, chosen alike for mirror copies, so that the
+/// wedges beyond it are still known as copies of their mirror images (`strips.rs`). The
+/// previous build, which dropped the strip, left 4 decisions uncertified from v81.
+#[test]
+fn joined_wedges_keep_a_strip() {
+    assert_certified_and_bounded("subdivided_icosahedron.obj", &[81]);
+}
+
 /// Open cylinders (`tests/data/open_cylinders.py`): bands of rectangular strips between vertical
 /// creases, which unroll to a rectangle as wide as the polygon's perimeter. A geodesic is a
 /// straight line in it: from section `s`, ring `r` to section `i`, ring `j`, the hypotenuse of the

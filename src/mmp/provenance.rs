@@ -261,7 +261,8 @@ impl<S: Scalar> Provenance<S> {
     /// and `next` after it along the edge, with the same distance function (as the backend
     /// decided): the anchor of each range end from the wedge that owned that end, the
     /// distances at the edge's vertices, the region image and the path from the first where
-    /// it keeps them (the two give the same values there).
+    /// it keeps them (the two give the same values there), and a strip that describes both
+    /// ([`Strip::joined`]).
     pub(crate) fn joined(self, next: Self) -> Self {
         let either = |a: S::Kept<S>, b: S::Kept<S>| if S::kept(&a).is_some() { a } else { b };
         let [first_0, first_1] = self.at_ends;
@@ -288,8 +289,10 @@ impl<S: Scalar> Provenance<S> {
             crossings: [crossing_0, crossing_1],
             image,
             path,
-            // The joined range's ends come from two strips.
-            strip: Default::default(),
+            strip: match (S::kept(&self.strip), S::kept(&next.strip)) {
+                (Some(first), Some(next)) => S::keep(|| first.joined(&next)),
+                _ => Default::default(),
+            },
             shadows: [shadow_0, shadow_1],
         }
     }

@@ -62,6 +62,27 @@ impl Strip {
         self
     }
 
+    /// The strip of a wedge joined from this strip's wedge and `next`'s (after it along the
+    /// edge): one image, proved so, seen through two chains of faces. Either chain's shape
+    /// fixes that image, so either describes the joined wedge; the one of the least
+    /// description does, so that a mirror image or congruent copy of the joined wedge, joined
+    /// from the corresponding pieces, is described alike. Its range ends keep their keys:
+    /// `b0` this strip's, `b1` `next`'s.
+    pub(crate) fn joined(&self, next: &Strip) -> Strip {
+        let least = |s: &Strip| {
+            let mut ids = s.ids;
+            ids.sort_unstable();
+            ids
+        };
+        let mut joined = if least(next) < least(self) {
+            *next
+        } else {
+            *self
+        };
+        joined.ends = [None; 2];
+        joined.ending_at(0, self, 0).ending_at(1, next, 1)
+    }
+
     /// Whether range end `i` of this strip's wedge and range end `j` of `other`'s, on the same
     /// edge, are one point: both named, with equal keys read from the same end of the edge.
     pub(crate) fn same_end(&self, i: usize, other: &Strip, j: usize) -> bool {
