@@ -78,7 +78,8 @@ pub(crate) trait WedgeFields<S> {
     /// The smallest distance the wedge gives on its range (its priority [SSK+05 §4]): at the
     /// foot of the pseudo-source if inside, else at the nearer end (the distance is convex);
     /// `sigma + y`, at most below it by the backend's resolution, where the backend leaves the
-    /// foot's side of an end open ([`Scalar::foot_within`]). Read only as a key of the queue.
+    /// foot's side of an end open ([`Scalar::foot_within`]). Read as a key of the queue and
+    /// against a maximum distance, where a lower value only keeps a wedge longer.
     fn min_distance(&self) -> S
     where
         S: Scalar,
