@@ -373,7 +373,7 @@ fn a_foot_at_a_range_end_is_no_decision() {
 }
 
 /// pyvista's icosahedron with each face split linearly into 16 (`tests/data/
-/// subdivided_icosahedron.py`, float32 coordinates): some of its big faces are exactly flat
+/// subdivided_solids.py`, float32 coordinates): some of its big faces are exactly flat
 /// regions, where wedges of one image on both sides of a vertex's shadow are joined. The
 /// joined wedge keeps the strip of one piece, chosen alike for mirror copies, so that the
 /// wedges beyond it are still known as copies of their mirror images (`strips.rs`). The
@@ -381,6 +381,17 @@ fn a_foot_at_a_range_end_is_no_decision() {
 #[test]
 fn joined_wedges_keep_a_strip() {
     assert_certified_and_bounded("subdivided_icosahedron.obj", &[81]);
+}
+
+/// pyvista's octahedron with each face split linearly into 16 (`tests/data/
+/// subdivided_solids.py`, float32 coordinates). From v65, a vertex is reached by paths whose
+/// last straight line runs in one flat region from one image, after routes through different
+/// strips: measured from that image, the distance is one expression (`paths.rs`,
+/// `CongruentPaths::length_from`), where the paths' keys gave it two. The previous build left
+/// 6 decisions uncertified.
+#[test]
+fn distances_measured_from_one_image_in_a_flat_region_are_one_expression() {
+    assert_certified_and_bounded("subdivided_octahedron.obj", &[65]);
 }
 
 /// Open cylinders (`tests/data/open_cylinders.py`): bands of rectangular strips between vertical

@@ -125,9 +125,16 @@ pub(crate) struct CongruentPaths<S> {
     /// The class of each edge: edges of one class have equal exact lengths.
     classes: Vec<u32>,
     lengths: HashMap<Vec<u32>, S>,
+    /// The vertex distances measured in flat regions, by region and vertex: the image and
+    /// sigma they were measured from, and the expression (see [`CongruentPaths::length_from`]).
+    measured: HashMap<(u32, VertexId), Vec<Measured<S>>>,
     /// One image per edge and pair of strip descriptions (see [`CongruentPaths::image`]).
     images: HashMap<(EdgeId, [Vec<u32>; 2]), Planar<S>>,
 }
+
+/// A vertex distance measured in a flat region: the image in the region's frame, the sigma
+/// added to the straight line, and the distance's expression.
+type Measured<S> = ([S; 2], S, S);
 
 /// Separates the segments of a key.
 const SEGMENT_END: u32 = u32::MAX;
@@ -157,6 +164,7 @@ impl<S: Scalar> CongruentPaths<S> {
         Some(CongruentPaths {
             classes,
             lengths: HashMap::new(),
+            measured: HashMap::new(),
             images: HashMap::new(),
         })
     }
@@ -169,6 +177,42 @@ impl<S: Scalar> CongruentPaths<S> {
             Some(key) => self.lengths.entry(key).or_insert_with(length).clone(),
             None => length(),
         }
+    }
+
+    /// [`CongruentPaths::length`] of a path that ends with a straight line in a flat region,
+    /// from the image `at` (in the frame of `region`) to its corner `v`, after `sigma`. That
+    /// length is fixed by the image and `sigma` as well as by the path's strips: a path met
+    /// before with the same key, or a distance measured before from the same image (proved the
+    /// same point, with the same `sigma`), gives its expression, which both keep for those to
+    /// come. Paths that reach the same image by routes of different strips (on either side of
+    /// a vertex within the region, across a crease at two of its edges) then tie by structure,
+    /// as their congruent copies do.
+    pub(crate) fn length_from(
+        &mut self,
+        mesh: &TriMesh,
+        path: &Path,
+        (region, v, at, sigma): (u32, VertexId, &[S; 2], &S),
+        length: impl FnOnce() -> S,
+    ) -> S {
+        let key = self.key(mesh, path);
+        let by_key = key.as_ref().and_then(|k| self.lengths.get(k).cloned());
+        let measured = self.measured.entry((region, v)).or_default();
+        // Points far apart in `f64` are not compared exactly: sharing is never required.
+        let near =
+            |a: &S, b: &S| (a.to_f64() - b.to_f64()).abs() <= 1e-9 * (1.0 + a.to_f64().abs());
+        let same = |a: &S, b: &S| near(a, b) && S::proved_same_point([a, a], [b, b]);
+        let by_image = measured
+            .iter()
+            .find(|(p, s, _)| same(&p[0], &at[0]) && same(&p[1], &at[1]) && same(s, sigma))
+            .map(|(_, _, d)| d.clone());
+        let d = by_key.or_else(|| by_image.clone()).unwrap_or_else(length);
+        if by_image.is_none() {
+            measured.push((at.clone(), sigma.clone(), d.clone()));
+        }
+        if let Some(key) = key {
+            self.lengths.entry(key).or_insert_with(|| d.clone());
+        }
+        d
     }
 
     /// The image `at`, in the frame of edge `e` (from its end `ends[0]` to `ends[1]`), of the

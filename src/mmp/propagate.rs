@@ -742,10 +742,16 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let path = continued::<S>(&kept.path, |p| p.across(face));
         let apex_path = continued::<S>(&path, |p| p.to(layout.apex_vertex()));
         let paths = &mut self.paths;
-        let at_apex = S::keep(|| match (paths.as_mut(), S::kept(&apex_path)) {
-            (Some(paths), Some(p)) => paths.length(mesh, &p, apex_distance),
-            _ => apex_distance(),
-        });
+        let at_apex = S::keep(
+            || match (paths.as_mut(), S::kept(&apex_path), flat, &image) {
+                (Some(paths), Some(p), Some((_, region)), Some(image)) => {
+                    let from = (region, layout.apex_vertex(), &image.point, &w.sigma);
+                    paths.length_from(mesh, &p, from, apex_distance)
+                }
+                (Some(paths), Some(p), _, _) => paths.length(mesh, &p, apex_distance),
+                _ => apex_distance(),
+            },
+        );
         // A range end at an end of the edge is that vertex, which lies on the near edge at
         // t = 0 (v0) or on the far edge at u = 1 (v1): exactly there, not at a constructed
         // quotient equal to it that an exact backend would have to prove equal.
