@@ -580,14 +580,21 @@ impl NormalForm {
     }
 }
 
+/// How many times [`NormalForm::is_zero_by_elimination`] may split a form into the two parts
+/// it asks in turn: each split may double the work.
+const SPLIT_DEPTH: u32 = 6;
+
 impl NormalForm {
     /// Whether the form is zero, by eliminating its square roots one at a time: with `s` its
     /// last square-root symbol (of square `D`, positive) and the form `A + B s`, the form is
     /// zero when `A` and `B` have opposite signs (by their enclosures) and `A^2 - B^2 D`, free
-    /// of `s`, is zero in turn; then `|A| = |B| s`. A zero is a proof, whether or not the
-    /// symbols are independent (sums of distances `d1 + d2 = d3 + d4` of several radicals,
-    /// their radicands in turn of other radicals); `false` proves nothing.
-    fn is_zero_by_elimination(&self) -> bool {
+    /// of `s`, is zero in turn; then `|A| = |B| s`. Where neither `A`'s sign nor `B`'s is clear,
+    /// the form is zero when `A` and `B` are each zero: the symbols are not independent, and a
+    /// mirror image built through other faces is `s` times a combination of radicals that is
+    /// zero by identities of its own. A zero is a proof, whether or not the symbols are
+    /// independent (sums of distances `d1 + d2 = d3 + d4` of several radicals, their radicands
+    /// in turn of other radicals); `false` proves nothing.
+    fn is_zero_by_elimination(&self, splits: u32) -> bool {
         let mut form = self.clone();
         loop {
             if form.is_zero() {
@@ -619,15 +626,19 @@ impl NormalForm {
                     }
                 }
             }
-            let opposite = matches!(
-                (a.enclosure().sign(), b.enclosure().sign()),
-                (Some(Sign::Positive), Some(Sign::Negative))
-                    | (Some(Sign::Negative), Some(Sign::Positive))
-            );
-            let Some(next) = opposite
-                .then(|| a.mul(&a)?.add(&b.mul(&b)?.mul(&d)?, -1))
-                .flatten()
-            else {
+            let clear =
+                |form: &NormalForm| form.enclosure().sign().filter(|&sign| sign != Sign::Zero);
+            let next = match (clear(&a), clear(&b)) {
+                (Some(x), Some(y)) if x != y => {
+                    a.mul(&a).and_then(|a2| a2.add(&b.mul(&b)?.mul(&d)?, -1))
+                }
+                (None, None) if splits > 0 => {
+                    return a.is_zero_by_elimination(splits - 1)
+                        && b.is_zero_by_elimination(splits - 1);
+                }
+                _ => None,
+            };
+            let Some(next) = next else {
                 return false;
             };
             form = next;
@@ -641,7 +652,7 @@ impl NormalForm {
 pub(crate) fn zero_by_elimination(node: &Arc<Node>) -> bool {
     WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
     let form = memoized(node).unwrap_or_else(|| over_atoms(node));
-    form.is_zero_by_elimination()
+    form.is_zero_by_elimination(SPLIT_DEPTH)
 }
 
 /// Whether the node's normal form is zero, by [`NormalForm::is_zero_by_squares`] where its
@@ -921,5 +932,39 @@ fn compute_with(
             }
         }
         Op::Dropped => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Field, Real};
+    use super::*;
+
+    fn root(i: i64) -> Real {
+        Real::from_integer(i).sqrt()
+    }
+
+    /// `sqrt 7 (sqrt 6 - sqrt 2 sqrt 3 + sqrt 10 - sqrt 2 sqrt 5)` with `sqrt 7` the last symbol:
+    /// zero, as `sqrt 7` times a zero of radicals whose symbols are not independent. Its part
+    /// free of `sqrt 7` is zero as it stands, so no sign tells it apart from the other part.
+    fn zero_times_a_root(tiny: Real) -> Real {
+        new_tower();
+        let inner = root(6) - &(root(2) * &root(3)) + &root(10) - &(root(2) * &root(5)) + &tiny;
+        assert!(normal_form(&inner.0).is_some_and(|form| !form.is_zero()));
+        root(7) * &inner
+    }
+
+    #[test]
+    fn a_root_times_a_hidden_zero_is_proved_zero_by_elimination() {
+        let zero = zero_times_a_root(Real::from_integer(0));
+        assert!(normal_form(&zero.0).is_some_and(|form| !form.is_zero()));
+        assert!(zero_by_elimination(&zero.0));
+    }
+
+    #[test]
+    fn a_root_times_a_tiny_non_zero_is_not_proved_zero() {
+        let tiny =
+            Real::from_integer(1) / Real::from_rational(Rational::from(Integer::from(2).pow(200)));
+        assert!(!zero_by_elimination(&zero_times_a_root(tiny).0));
     }
 }
