@@ -406,6 +406,17 @@ fn mirror_twins_through_mirror_flat_regions_are_certified() {
     assert_certified_and_bounded("subdivided_icosahedron.obj", &[0]);
 }
 
+/// The octahedron split into 512 faces, its coordinates written to 8 decimals (`tests/data/
+/// subdivided_solids.py`): the big faces are only nearly flat, so mirror twins are built
+/// through mirror-image chains of faces. Their lengths are equal as radicals of integers that
+/// share large factors, which the tower's symbols (one per square class) do not show; over a
+/// coprime basis of those integers the form is unique (`normal_form/coprime.rs`). The
+/// previous build left 182 and 81 decisions uncertified from v0 and v1.
+#[test]
+fn radicals_sharing_large_factors_are_compared_over_a_coprime_basis() {
+    assert_certified_and_bounded("subdivided_octahedron_512.obj", &[0, 1]);
+}
+
 /// Open cylinders (`tests/data/open_cylinders.py`): bands of rectangular strips between vertical
 /// creases, which unroll to a rectangle as wide as the polygon's perimeter. A geodesic is a
 /// straight line in it: from section `s`, ring `r` to section `i`, ring `j`, the hypotenuse of the

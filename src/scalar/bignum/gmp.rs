@@ -74,6 +74,11 @@ impl Integer {
         Integer(rug::Integer::from(self.0.div_exact_ref(&d.0)))
     }
 
+    /// The greatest common divisor, non-negative.
+    pub(crate) fn gcd(&self, o: &Integer) -> Integer {
+        Integer(rug::Integer::from(self.0.gcd_ref(&o.0)))
+    }
+
     /// `self 2^bits`.
     pub(crate) fn shifted_left(&self, bits: u64) -> Integer {
         let bits = u32::try_from(bits).expect("shifts stay below 2^32 bits");

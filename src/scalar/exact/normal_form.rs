@@ -36,6 +36,8 @@ use std::collections::{BTreeMap, HashMap};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
+mod coprime;
+
 /// Normal forms with more terms than this are abandoned.
 const MAX_TERMS: usize = 256;
 
@@ -599,6 +601,9 @@ impl NormalForm {
         loop {
             if form.is_zero() {
                 return true;
+            }
+            if let Some(zero) = form.is_zero_over_coprime_radicals() {
+                return zero;
             }
             let Some(s) = form
                 .0

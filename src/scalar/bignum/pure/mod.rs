@@ -109,6 +109,11 @@ impl Integer {
         Integer(&self.0 / &d.0)
     }
 
+    /// The greatest common divisor, non-negative.
+    pub(crate) fn gcd(&self, o: &Integer) -> Integer {
+        Integer(self.0.gcd(&o.0))
+    }
+
     /// `self 2^bits`.
     pub(crate) fn shifted_left(&self, bits: u64) -> Integer {
         Integer(&self.0 << bits)
