@@ -14,8 +14,13 @@ then once ``exact-geodesics stats MODEL --source v:S``: a JSON object whose
 ``propagation_seconds``, ``wedges``, ``wedges_per_edge`` and
 ``wedge_memory_bytes`` are read.
 
-The peak RSS and the wall time of each child are measured with ``os.wait4``;
-each figure of the repeated runs is their median.
+The wall time of each child is measured here, and its peak RSS by GNU time
+(``/usr/bin/time -f %M``) when it is installed, else with ``os.wait4``
+(``ours_rss_method`` says which: ``gnu-time`` or ``wait4``); each figure of the
+repeated runs is their median. On Linux a child's ``ru_maxrss`` never falls
+below its parent's high-water mark at the fork (it survives exec), so
+``os.wait4`` reports at least this harness's own RSS (about 19 MiB), while
+GNU time's small process is all that the measured command inherits.
 Results go to OUT/benchmark.json and OUT/benchmark.csv (rewritten after each
 model), a table goes to stdout, progress to stderr. The exit status is 0 when
 every run succeeded (whatever the timings and differences), 1 when some run
@@ -73,9 +78,11 @@ CSV_COLUMNS = [
     "ours_stats_peak_rss_bytes",
     "ours_distance_wall_seconds",
     "ours_distance_peak_rss_bytes",
+    "ours_rss_method",
     "gdist_peak_rss_bytes",
     "gdist_rss_before_bytes",
     "gdist_rss_increase_bytes",
+    "gdist_rss_method",
     "ours_reached",
     "gdist_reached",
     "finite_in_both",
@@ -101,9 +108,27 @@ def log(message):
     print(message, file=sys.stderr, flush=True)
 
 
+def gnu_time():
+    """The path of GNU time if it is installed (None otherwise): it reports the peak RSS of
+    the command it runs, whose ``ru_maxrss`` then starts from GNU time's small one."""
+    path = Path("/usr/bin/time")
+    try:
+        probe = subprocess.run([str(path), "--version"], capture_output=True, text=True)
+    except OSError:
+        return None
+    return str(path) if "GNU" in probe.stdout + probe.stderr else None
+
+
+GNU_TIME = gnu_time()
+# How run_measured measures peak RSS, as recorded in the results.
+RSS_METHOD = "gnu-time" if GNU_TIME else "wait4"
+
+
 def run_measured(cmd, stdout_path, timeout):
     """Run ``cmd`` with stdout into ``stdout_path``; measure wall time and peak RSS.
 
+    The peak RSS is GNU time's ``%M`` when it is installed (``RSS_METHOD``), else the
+    child's ``ru_maxrss`` from ``os.wait4``, which includes this harness's high-water mark.
     The child runs in its own process group, killed whole on timeout or when
     the harness is interrupted. Returns ``(wall_seconds, peak_rss_bytes)``.
     Raises RunError when the command cannot start, exits non-zero or outlives
@@ -121,7 +146,10 @@ def run_measured(cmd, stdout_path, timeout):
         timed_out.set()
         kill_group(pid)
 
-    with open(stdout_path, "wb") as out, tempfile.TemporaryFile() as err:
+    with open(stdout_path, "wb") as out, tempfile.TemporaryFile() as err, \
+            tempfile.NamedTemporaryFile(mode="r", encoding="ascii") as rss:
+        if GNU_TIME:
+            cmd = [GNU_TIME, "-f", "%M", "-o", rss.name, *cmd]
         start = time.perf_counter()
         try:
             proc = subprocess.Popen(
@@ -143,14 +171,17 @@ def run_measured(cmd, stdout_path, timeout):
         proc.returncode = os.waitstatus_to_exitcode(status)
         err.seek(0)
         stderr = err.read().decode("utf-8", errors="replace").strip()
-
-    peak = usage.ru_maxrss if sys.platform == "darwin" else usage.ru_maxrss * 1024
+        reported = rss.read().strip()
     if timed_out.is_set():
         raise RunError(f"timed out after {timeout:g} s")
     if proc.returncode != 0:
         tail = "".join(f"\n    {line}" for line in stderr.splitlines()[-5:])
         raise RunError(f"exited with status {proc.returncode}{tail}")
-    return wall, peak
+    if not GNU_TIME:
+        return wall, usage.ru_maxrss if sys.platform == "darwin" else usage.ru_maxrss * 1024
+    if not reported.isdigit():
+        raise RunError(f"GNU time reported no peak RSS: {reported!r}")
+    return wall, int(reported) * 1024
 
 
 def read_distances_text(path):
@@ -308,12 +339,14 @@ def benchmark_model(name, mesh, args, raw_dir):
             gdist_rss_before_bytes=median([r["rss_before_bytes"] for r in gdist_reports if r["rss_before_bytes"] is not None]),
             gdist_rss_increase_bytes=median([r["rss_increase_bytes"] for r in gdist_reports if r["rss_increase_bytes"] is not None]),
             gdist_reached=last["reached"],
+            gdist_rss_method=last.get("peak_rss_method"),
         )
         result["gdist"] = last
     if ours_runs:
         result.update(
             ours_distance_wall_seconds=median([wall for wall, _ in ours_runs]),
             ours_distance_peak_rss_bytes=median([peak for _, peak in ours_runs]),
+            ours_rss_method=RSS_METHOD,
         )
         try:
             result.update(in_fresh_process(compare_outputs, ours_csv, gdist_txt, result["vertices"]))

@@ -9,11 +9,14 @@ vertices:
   ``time.perf_counter()`` around the call. gdist builds its own mesh
   (adjacency) inside the call, so both include that construction.
 - ``rss_before_bytes``: resident set size just before the call.
-- ``peak_rss_bytes``: ``ru_maxrss`` of this process after the call. On Linux
-  the high-water mark is reset just before the call (``peak_rss_reset``), so
-  this is the peak while the call ran, the interpreter, NumPy, SciPy and the
-  mesh arrays included; ``rss_increase_bytes`` is that peak minus the RSS
-  before the call.
+- ``peak_rss_bytes``: the peak RSS while the call ran, the interpreter, NumPy,
+  SciPy and the mesh arrays included; ``rss_increase_bytes`` is that peak minus
+  the RSS before the call. On Linux the kernel's high-water mark is reset just
+  before the call (``peak_rss_reset``) and read back as ``VmHWM`` from
+  /proc/self/status (``peak_rss_method`` says which): ``ru_maxrss`` would not
+  do, since it never falls below the high-water mark of the process image
+  replaced by exec, i.e. of the parent at the fork. Elsewhere it is
+  ``ru_maxrss`` (the peak since the process started).
 
 Unreachable vertices and vertices no face uses come back from gdist as its
 ``GEODESIC_INF`` (1e100) or as ``inf``; both are written as ``inf``. Distances
@@ -65,12 +68,12 @@ def load_obj(path):
     return vertices, triangles
 
 
-def current_rss_bytes():
-    """Resident set size of this process now, from /proc (None elsewhere)."""
+def proc_status_bytes(field):
+    """A size field of /proc/self/status (``VmRSS``, ``VmHWM``) in bytes; None elsewhere."""
     try:
         with open("/proc/self/status", encoding="ascii") as status:
             for line in status:
-                if line.startswith("VmRSS:"):
+                if line.startswith(field + ":"):
                     return int(line.split()[1]) * 1024
     except OSError:
         pass
@@ -87,10 +90,13 @@ def reset_peak_rss():
         return False
 
 
-def peak_rss_bytes():
-    """Peak RSS of this process as reported by getrusage, in bytes."""
+def peak_rss(since_reset):
+    """``(bytes, method)``: the peak RSS of this process, since the reset if there was one."""
+    hwm = proc_status_bytes("VmHWM") if since_reset else None
+    if hwm is not None:
+        return hwm, "VmHWM"
     maxrss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-    return maxrss if sys.platform == "darwin" else maxrss * 1024
+    return (maxrss if sys.platform == "darwin" else maxrss * 1024), "ru_maxrss"
 
 
 def main():
@@ -106,13 +112,13 @@ def main():
     sources = np.array([args.source], dtype=np.int32)
 
     peak_reset = reset_peak_rss()
-    rss_before = current_rss_bytes()
+    rss_before = proc_status_bytes("VmRSS")
     cpu_start = time.process_time()
     wall_start = time.perf_counter()
     distances = gdist.compute_gdist(vertices, triangles, source_indices=sources)
     wall = time.perf_counter() - wall_start
     cpu = time.process_time() - cpu_start
-    peak = peak_rss_bytes()
+    peak, peak_method = peak_rss(peak_reset)
 
     distances = np.asarray(distances, dtype=np.float64)
     distances[~(distances < UNREACHED_THRESHOLD)] = np.inf
@@ -133,6 +139,7 @@ def main():
         "rss_before_bytes": rss_before,
         "peak_rss_bytes": peak,
         "peak_rss_reset": peak_reset,
+        "peak_rss_method": peak_method,
         "rss_increase_bytes": None if rss_before is None else max(0, peak - rss_before),
         "reached": int(np.isfinite(distances).sum()),
         "distances_path": str(args.distances),
