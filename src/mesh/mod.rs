@@ -322,8 +322,8 @@ impl TriMesh {
     /// # Panics
     /// If `e` is not an edge of the mesh.
     #[inline]
-    pub fn wing(&self, e: EdgeId, side: Side) -> Option<&Wing> {
-        self.topology.wing(e, side.index())
+    pub fn wing(&self, e: EdgeId, side: Side) -> Option<Wing> {
+        self.topology.wing(&self.faces, e, side.index())
     }
 
     /// The number of sides of an edge: 2 (side 1 is empty on the boundary), or one per face on
@@ -381,7 +381,7 @@ impl TriMesh {
 
     /// The number of sides of all edges.
     pub(crate) fn side_slot_count(&self) -> usize {
-        self.topology.wings.len()
+        self.topology.side_slot_count()
     }
 
     /// The strict check: refuses a mesh that is not a manifold along its edges, as a caller who

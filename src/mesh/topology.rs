@@ -42,7 +42,7 @@ impl Edge {
 /// A face seen from one of its edges: the apex (the corner opposite the edge) and the two other
 /// edges, `near` joining `vertices[0]` of the edge to the apex and `far` joining the apex to
 /// `vertices[1]`. This is the combinatorial half of unfolding a face across an edge [SSK+05 §3].
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Wing {
     /// The face.
     pub face: FaceId,
@@ -58,9 +58,6 @@ pub struct Wing {
 pub(super) struct Topology {
     pub(super) edges: Vec<Edge>,
     pub(super) face_edges: Vec<[EdgeId; 3]>,
-    /// The wings of sides 0 and 1 of every edge (`2 e + side`), then those of the further
-    /// sides of edges with more than two faces, edge by edge.
-    pub(super) wings: Vec<Option<Wing>>,
     /// Faces beyond the first two of each edge: `extra_start[e]..extra_start[e + 1]` indexes
     /// `extra_faces`, and side `2 + i` of edge `e` is its `i`-th extra face.
     extra_start: Vec<u32>,
@@ -425,40 +422,11 @@ impl Topology {
             1.0
         };
 
-        let wing = |ei: usize, f: FaceId| {
-            let corners = faces[f.index()];
-            let fe = face_edges[f.index()];
-            let k = fe
-                .iter()
-                .position(|&x| x.index() == ei)
-                .expect("edge belongs to face");
-            let apex = VertexId(corners[(k + 2) % 3]);
-            // The face's other two edges: k+1 goes from corner k+1 to the apex, k+2 from the apex to corner k.
-            let (after, before) = (fe[(k + 1) % 3], fe[(k + 2) % 3]);
-            let (near, far) = if VertexId(corners[k]) == edges[ei].vertices[0] {
-                (before, after)
-            } else {
-                (after, before)
-            };
-            Wing {
-                face: f,
-                apex,
-                near,
-                far,
-            }
-        };
-        let mut wings = Vec::with_capacity(2 * edges.len() + extra_faces.len());
-        for (ei, e) in edges.iter().enumerate() {
-            for side in 0..2 {
-                wings.push(e.faces[side].map(|f| wing(ei, f)));
-            }
-            if forward[ei][0] == forward[ei][1] && e.faces[1].is_some() {
-                report.inconsistently_oriented_edges += 1;
-            }
-        }
-        for ei in 0..edges.len() {
-            wings.extend(faces_of(ei).skip(2).map(|f| Some(wing(ei, f))));
-        }
+        report.inconsistently_oriented_edges = edges
+            .iter()
+            .zip(&forward)
+            .filter(|(e, f)| f[0] == f[1] && e.faces[1].is_some())
+            .count();
         report.boundary_edges = edges.iter().filter(|e| e.is_boundary()).count();
 
         let (vertex_face_start, vertex_face_list) = csr(
@@ -605,7 +573,6 @@ impl Topology {
             Topology {
                 edges,
                 face_edges,
-                wings,
                 extra_start,
                 extra_faces,
                 edge_length,
@@ -630,13 +597,42 @@ impl Topology {
         &self.extra_faces[self.extra_start[i] as usize..self.extra_start[i + 1] as usize]
     }
 
-    /// The wing of side `side` of edge `e`.
-    #[inline]
-    pub(super) fn wing(&self, e: EdgeId, side: usize) -> Option<&Wing> {
-        self.wings[self.side_slot(e, side)].as_ref()
+    /// The wing of side `side` of edge `e` (`faces`: the mesh's corners). Worked out on each
+    /// call rather than stored: a table of them took 20 bytes per side, as much as the rest of
+    /// the topology of a side, for what the face's corners and edges already say.
+    pub(super) fn wing(&self, faces: &[[u32; 3]], e: EdgeId, side: usize) -> Option<Wing> {
+        let face = match side {
+            0 | 1 => self.edges[e.index()].faces[side]?,
+            _ => *self.extra_faces(e).get(side - 2)?,
+        };
+        let corners = faces[face.index()];
+        let fe = self.face_edges[face.index()];
+        let k = fe
+            .iter()
+            .position(|&x| x == e)
+            .expect("edge belongs to face");
+        let apex = VertexId(corners[(k + 2) % 3]);
+        // The face's other two edges: k+1 goes from corner k+1 to the apex, k+2 from the apex to corner k.
+        let (after, before) = (fe[(k + 1) % 3], fe[(k + 2) % 3]);
+        let (near, far) = if VertexId(corners[k]) == self.edges[e.index()].vertices[0] {
+            (before, after)
+        } else {
+            (after, before)
+        };
+        Some(Wing {
+            face,
+            apex,
+            near,
+            far,
+        })
     }
 
-    /// Where the data of side `side` of edge `e` lives in per-side arrays such as `wings`.
+    /// The number of sides of all edges: the length of per-side arrays ([`Topology::side_slot`]).
+    pub(super) fn side_slot_count(&self) -> usize {
+        2 * self.edges.len() + self.extra_faces.len()
+    }
+
+    /// Where the data of side `side` of edge `e` lives in per-side arrays.
     #[inline]
     pub(super) fn side_slot(&self, e: EdgeId, side: usize) -> usize {
         if side < 2 {

@@ -207,10 +207,10 @@ fn frame_wing(mesh: &TriMesh, reversed: &[bool], e: EdgeId, side: Side) -> Optio
         Wing {
             near: wing.far,
             far: wing.near,
-            ..wing.clone()
+            ..wing
         }
     } else {
-        wing.clone()
+        wing
     })
 }
 
@@ -305,7 +305,7 @@ impl<S: Scalar> Unfolding<S> {
         };
         let mut edge_length = Vec::with_capacity(edge_count);
         let mut zero_length = Vec::with_capacity(edge_count);
-        let mut apex: Vec<Option<Apex<S>>> = vec![None; mesh.side_slot_count()];
+        let mut sides: Vec<Option<FaceSide<S>>> = vec![None; mesh.side_slot_count()];
         let mut has_twin = vec![false; mesh.vertex_count()];
         let flat = S::kept(&S::keep(|| {
             let points: Vec<[S; 3]> = (0..mesh.vertex_count())
@@ -313,6 +313,10 @@ impl<S: Scalar> Unfolding<S> {
                 .collect();
             FlatRegions::new(mesh, &points, reversed.clone())
         }));
+        // Whether the points of every face's far edge are computed from its far end, as the
+        // mirror image of the near edge's ([`FaceLayout::far_from_end`]): for number types
+        // that keep values.
+        let mirrored_far = flat.is_some();
         for i in 0..edge_count {
             let e = EdgeId(i as u32);
             let ends = frame_ends(mesh, &reversed, e);
@@ -324,58 +328,48 @@ impl<S: Scalar> Unfolding<S> {
             }
             edge_length.push(frame.as_ref().map_or_else(S::zero, EdgeFrame::length));
             zero_length.push(frame.is_none());
-            let backwards = frame
-                .as_ref()
-                .and_then(|_| EdgeFrame::<S>::new(mesh, ends[1], ends[0]));
+            let Some(frame) = frame else {
+                continue;
+            };
+            let backwards = EdgeFrame::<S>::new(mesh, ends[1], ends[0]);
             for side in mesh.sides(e) {
-                let wing = frame_wing(mesh, &reversed, e, side);
-                let in_region = wing
-                    .as_ref()
-                    .zip(flat.as_ref())
-                    .filter(|(w, r)| r.region(w.face).is_some());
-                apex[mesh.side_slot(e, side)] = match (in_region, frame.as_ref()) {
-                    (Some((wing, regions)), Some(_)) => {
-                        Some(regions.apex(mesh, (e, wing.face), &edge_length[i], wing.apex))
-                    }
-                    _ => frame
-                        .as_ref()
-                        .zip(backwards.as_ref())
-                        .zip(wing.as_ref())
-                        .map(|((f, b), wing)| Apex::new(mesh, [f, b], ends, wing.apex)),
-                };
-            }
-        }
-        // Whether the points of every face's far edge are computed from its far end, as the
-        // mirror image of the near edge's ([`FaceLayout::far_from_end`]): for number types
-        // that keep values.
-        let mirrored_far = flat.is_some();
-        let mut sides: Vec<Option<FaceSide<S>>> = vec![None; mesh.side_slot_count()];
-        for i in 0..edge_count {
-            let e = EdgeId(i as u32);
-            for side in mesh.sides(e) {
-                let slot = mesh.side_slot(e, side);
-                let (Some(wing), Some(apex)) =
-                    (frame_wing(mesh, &reversed, e, side), apex[slot].take())
-                else {
+                let Some(wing) = frame_wing(mesh, &reversed, e, side) else {
                     continue;
                 };
-                let (near, far) = (wing.near.index(), wing.far.index());
+                let apex = match (flat.as_ref(), backwards.as_ref()) {
+                    (Some(regions), _) if regions.region(wing.face).is_some() => {
+                        regions.apex(mesh, (e, wing.face), &edge_length[i], wing.apex)
+                    }
+                    (_, Some(backwards)) => Apex::new(mesh, [&frame, backwards], ends, wing.apex),
+                    (_, None) => continue,
+                };
                 let near_reversed = frame_ends(mesh, &reversed, wing.near)[0] == wing.apex;
                 let far_reversed = frame_ends(mesh, &reversed, wing.far)[0] != wing.apex;
-                sides[slot] = Some(FaceSide {
+                let (near, far) = (wing.near.index(), wing.far.index());
+                // The lengths of the other two edges are set below, once every edge is
+                // measured: a table of the apexes kept until then would take half as much
+                // memory again as the sides.
+                sides[mesh.side_slot(e, side)] = Some(FaceSide {
                     apex,
-                    near_length: edge_length[near].clone(),
-                    far_length: edge_length[far].clone(),
+                    near_length: S::zero(),
+                    far_length: S::zero(),
                     near_reversed,
                     far_reversed,
                     near_from_apex: near_reversed && anchored[near],
                     far_from_end: (far_reversed && anchored[far]) || mirrored_far,
-                    near_zero_length: zero_length[near],
-                    far_zero_length: zero_length[far],
+                    near_zero_length: false,
+                    far_zero_length: false,
                     more_sides: mesh.side_count(e) > 2,
                     wing,
                 });
             }
+        }
+        for face in sides.iter_mut().flatten() {
+            let (near, far) = (face.wing.near.index(), face.wing.far.index());
+            face.near_length = edge_length[near].clone();
+            face.far_length = edge_length[far].clone();
+            face.near_zero_length = zero_length[near];
+            face.far_zero_length = zero_length[far];
         }
         Unfolding {
             edge_length,
@@ -618,7 +612,7 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
     ) -> Option<Self> {
         let face = unfolding.sides[mesh.side_slot(e, side)].as_ref()?;
         Some(FaceLayout {
-            wing: face.wing.clone(),
+            wing: face.wing,
             length: unfolding.length(e),
             apex_x: &face.apex.x,
             apex_far_x: &face.apex.far_x,
