@@ -64,10 +64,10 @@ impl TriMesh {
     /// ```
     pub fn new<P: Into<DVec3>>(
         positions: Vec<P>,
-        faces: Vec<[u32; 3]>,
+        mut faces: Vec<[u32; 3]>,
     ) -> Result<TriMesh, MeshError> {
         const MAX: usize = (u32::MAX - 1) as usize;
-        let positions: Vec<DVec3> = positions.into_iter().map(Into::into).collect();
+        let mut positions: Vec<DVec3> = positions.into_iter().map(Into::into).collect();
         for count in [positions.len(), faces.len()] {
             if count > MAX / 3 {
                 return Err(MeshError::TooLarge {
@@ -107,6 +107,9 @@ impl TriMesh {
                 }
             }
         }
+        // Readers grow these as they go: up to twice the room, for the mesh's lifetime.
+        positions.shrink_to_fit();
+        faces.shrink_to_fit();
         let (topology, report) = topology::Topology::build(&positions, &faces);
         Ok(TriMesh {
             positions,

@@ -59,7 +59,8 @@ pub(super) struct Topology {
     pub(super) edges: Vec<Edge>,
     pub(super) face_edges: Vec<[EdgeId; 3]>,
     /// Faces beyond the first two of each edge: `extra_start[e]..extra_start[e + 1]` indexes
-    /// `extra_faces`, and side `2 + i` of edge `e` is its `i`-th extra face.
+    /// `extra_faces`, and side `2 + i` of edge `e` is its `i`-th extra face. Both are empty on a
+    /// mesh without such edges (most of them), which then pays nothing per edge for them.
     extra_start: Vec<u32>,
     extra_faces: Vec<FaceId>,
     pub(super) edge_length: Vec<f64>,
@@ -299,6 +300,16 @@ fn csr<T: Copy>(n: usize, pairs: impl Iterator<Item = (usize, T)> + Clone) -> (V
     (start, list)
 }
 
+/// The faces of edge `ei` beyond its first two, from `Topology::extra_start` and
+/// `Topology::extra_faces`.
+fn extra_of<'a>(start: &[u32], faces: &'a [FaceId], ei: usize) -> &'a [FaceId] {
+    if start.is_empty() {
+        &[]
+    } else {
+        &faces[start[ei] as usize..start[ei + 1] as usize]
+    }
+}
+
 struct UnionFind(Vec<u32>);
 impl UnionFind {
     fn new(n: usize) -> Self {
@@ -375,9 +386,12 @@ impl Topology {
             face_edges.push(fe);
         }
         // Extra faces in input order on each edge (the sort is stable).
-        let (extra_start, extra_faces) = csr(edges.len(), extra.into_iter());
+        let (extra_start, extra_faces) = match extra.is_empty() {
+            true => (Vec::new(), Vec::new()),
+            false => csr(edges.len(), extra.into_iter()),
+        };
         let faces_of = |ei: usize| {
-            let more = &extra_faces[extra_start[ei] as usize..extra_start[ei + 1] as usize];
+            let more = extra_of(&extra_start, &extra_faces, ei);
             edges[ei]
                 .faces
                 .into_iter()
@@ -593,8 +607,7 @@ impl Topology {
     /// The faces of edge `e` beyond its first two.
     #[inline]
     pub(super) fn extra_faces(&self, e: EdgeId) -> &[FaceId] {
-        let i = e.index();
-        &self.extra_faces[self.extra_start[i] as usize..self.extra_start[i + 1] as usize]
+        extra_of(&self.extra_start, &self.extra_faces, e.index())
     }
 
     /// The wing of side `side` of edge `e` (`faces`: the mesh's corners). Worked out on each
