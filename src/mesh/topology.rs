@@ -385,6 +385,8 @@ impl Topology {
             }
             face_edges.push(fe);
         }
+        // Boundary edges outnumber the guess above on an open mesh, which doubled the room.
+        edges.shrink_to_fit();
         // Extra faces in input order on each edge (the sort is stable).
         let (extra_start, extra_faces) = match extra.is_empty() {
             true => (Vec::new(), Vec::new()),
