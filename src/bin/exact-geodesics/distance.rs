@@ -1,10 +1,10 @@
 //! `distance`: the geodesic distance of every vertex.
 
-use crate::{certified_digits, emit, with_backend, Backend, Common, Digits};
+use crate::{certified_digits, emit_with, with_backend, Backend, Common, Digits};
 use clap::{Args, ValueEnum};
 use exact_geodesics::scalar::Real;
 use exact_geodesics::{Scalar, SourceId, VertexField, VertexId};
-use std::fmt::Write;
+use std::io::Write;
 use std::path::PathBuf;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -35,23 +35,26 @@ enum Distance {
 
 pub fn run(args: &DistanceArgs) -> Result<(), String> {
     let job = args.common.job()?;
-    let rows = match args.digits.checked(job.backend)? {
-        Some(digits) => exact_rows(&job.vertex_field::<Real>()?, digits)?,
-        None => with_backend!(job.backend, S => float_rows(&job.vertex_field::<S>()?)),
+    let write = |rows: &mut dyn Iterator<Item = Row>| {
+        emit_with(args.out.as_ref(), |out| write_rows(rows, args.format, out))
     };
-    emit(args.out.as_ref(), &render(rows, args.format))
+    match args.digits.checked(job.backend)? {
+        // Collected first: a value that cannot be certified fails the command before any output.
+        Some(digits) => write(&mut exact_rows(&job.vertex_field::<Real>()?, digits)?.into_iter()),
+        // Streamed from the field: the rows of a large mesh are never held whole.
+        None => with_backend!(job.backend, S => write(&mut float_rows(&job.vertex_field::<S>()?))),
+    }
 }
 
 type Row = (u32, Distance, Option<SourceId>);
 
-fn float_rows<S: Scalar>(field: &VertexField<'_, S>) -> Vec<Row> {
+fn float_rows<'a, S: Scalar>(field: &'a VertexField<'_, S>) -> impl Iterator<Item = Row> + 'a {
     (0..field.mesh().vertex_count() as u32)
         .map(VertexId)
         .map(|v| {
             let d = Distance::Float(field.vertex_distance(v));
             (v.0, d, field.nearest_source(v))
         })
-        .collect()
 }
 
 fn exact_rows(field: &VertexField<'_, Real>, digits: u32) -> Result<Vec<Row>, String> {
@@ -67,24 +70,25 @@ fn exact_rows(field: &VertexField<'_, Real>, digits: u32) -> Result<Vec<Row>, St
         .collect()
 }
 
-fn render(rows: Vec<Row>, format: DistanceFormat) -> String {
+fn write_rows(
+    rows: &mut dyn Iterator<Item = Row>,
+    format: DistanceFormat,
+    out: &mut dyn Write,
+) -> std::io::Result<()> {
     match format {
         DistanceFormat::Csv => {
-            let mut out = String::with_capacity(32 * rows.len());
-            out.push_str("vertex,distance,source\n");
+            writeln!(out, "vertex,distance,source")?;
             for (v, d, s) in rows {
                 let s = s.map(|s| s.0.to_string()).unwrap_or_default();
                 match d {
-                    Distance::Float(d) => writeln!(out, "{v},{},{s}", Shortest(d)),
-                    Distance::Digits(d) => writeln!(out, "{v},{d},{s}"),
+                    Distance::Float(d) => writeln!(out, "{v},{},{s}", Shortest(d))?,
+                    Distance::Digits(d) => writeln!(out, "{v},{d},{s}")?,
                 }
-                .expect("writing to a String");
             }
-            out
+            Ok(())
         }
         DistanceFormat::Json => {
             let rows: Vec<serde_json::Value> = rows
-                .into_iter()
                 .map(|(v, d, s)| {
                     let d = match d {
                         Distance::Float(d) => serde_json::json!(d.is_finite().then_some(d)),
@@ -93,13 +97,12 @@ fn render(rows: Vec<Row>, format: DistanceFormat) -> String {
                     serde_json::json!({"vertex": v, "distance": d, "source": s})
                 })
                 .collect();
-            let mut out = serde_json::to_string_pretty(&serde_json::json!({
+            let json = serde_json::to_string_pretty(&serde_json::json!({
                 "unreachable": "distance null",
                 "vertices": rows,
             }))
             .expect("JSON of plain values");
-            out.push('\n');
-            out
+            writeln!(out, "{json}")
         }
     }
 }

@@ -25,7 +25,7 @@ use exact_geodesics::{
     propagate_vertices_with_progress, propagate_with_progress, GeodesicField, PointError,
     PropagateOptions, Scalar, Stats, SurfacePoint, TriMesh, VertexField,
 };
-use std::io::Write;
+use std::io::{BufWriter, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -296,14 +296,26 @@ pub(crate) use with_backend;
 
 /// Writes a command's output to `--out` or stdout.
 pub fn emit(out: Option<&PathBuf>, text: &str) -> Result<(), String> {
+    emit_with(out, |w| w.write_all(text.as_bytes()))
+}
+
+/// Writes a command's output to `--out` or stdout as `write` produces it, through a buffer, so
+/// that a large output need not be held whole. A closed stdout (`| head`) is not an error.
+pub fn emit_with(
+    out: Option<&PathBuf>,
+    write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+) -> Result<(), String> {
     match out {
-        Some(path) => std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display())),
+        Some(path) => std::fs::File::create(path)
+            .and_then(|file| {
+                let mut file = BufWriter::new(file);
+                write(&mut file)?;
+                file.flush()
+            })
+            .map_err(|e| format!("{}: {e}", path.display())),
         None => {
-            let mut stdout = std::io::stdout().lock();
-            match stdout
-                .write_all(text.as_bytes())
-                .and_then(|_| stdout.flush())
-            {
+            let mut stdout = BufWriter::new(std::io::stdout().lock());
+            match write(&mut stdout).and_then(|()| stdout.flush()) {
                 Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(format!("stdout: {e}")),
                 _ => Ok(()),
             }
