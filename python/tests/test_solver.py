@@ -189,32 +189,28 @@ def test_backends_agree(icosphere):
         np.testing.assert_allclose(field.distances, reference, rtol=1e-9)
 
 
-def checkerboard_terrain():
-    """2 x 2 unit squares, the corners of one colour raised by 1/2 (rows of vertices, each
-    square split by its diagonal from its first corner)."""
+def fold():
+    """Two unit squares folded along their shared edge by a height of 7e-46 at one corner
+    (tests/exact_certified.rs, `FOLD`): signs that need more than 128 bits."""
     vertices = np.array(
-        [[i, j, 0.5 * ((i + j) % 2)] for j in range(3) for i in range(3)], dtype=np.float64
+        [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 7.006492321624085e-46], [2, 0, 0], [2, 1, 0]],
+        dtype=np.float64,
     )
-    triangles = []
-    for j in range(2):
-        for i in range(2):
-            a = 3 * j + i
-            triangles += [[a, a + 1, a + 4], [a, a + 4, a + 3]]
-    return vertices, np.array(triangles)
+    return vertices, np.array([[0, 1, 3], [0, 3, 2], [1, 4, 5], [1, 5, 3]])
 
 
 def test_exact_backend_reports_whether_it_certified_every_decision():
-    # A flat grid is certified throughout; the zeros of a regular terrain with saddles are not
-    # yet (README, Backends): a few decisions reach the precision cap.
+    # A flat grid is certified throughout; a fold of 7e-46 is not within a precision cap of
+    # 128 bits: a few decisions reach it.
     vertices, triangles = eg.generate_mesh("grid:4,4")
     certified = eg.GeodesicSolver(vertices, triangles, backend="exact").propagate(0)
     assert certified.is_certified
     assert certified.stats()["backend"]["uncertified"] == 0
     assert certified.stats()["backend"]["decisions"] > 0
 
-    vertices, triangles = checkerboard_terrain()
-    solver = eg.GeodesicSolver(vertices, triangles, backend="exact", precision_cap=256)
-    field = solver.propagate(2)
+    vertices, triangles = fold()
+    solver = eg.GeodesicSolver(vertices, triangles, backend="exact", precision_cap=128)
+    field = solver.propagate(0)
     assert not field.is_certified
     assert field.stats()["backend"]["uncertified"] > 0
     # The float backends certify nothing, and claim nothing uncertified.
