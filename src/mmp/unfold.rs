@@ -164,18 +164,16 @@ impl<S: Scalar> Apex<S> {
 
 /// The face on one side of an edge, as the propagation of a wedge across it reads it
 /// ([`FaceLayout`]): everything in one record, where it was read from a dozen arrays indexed by
-/// the edge and by the face's two other edges (a cache miss each, at every wedge). One cache
-/// line in the `f64` engine.
+/// the edge and by the face's two other edges (a cache miss each, at every wedge). The lengths
+/// of the face's other edges are not copied here: 48 bytes in the `f64` engine, not a 64-byte
+/// cache line, for the largest table of a run (a third of fandisk's heap; the lengths are read
+/// where a point is carried into an edge, not at every wedge).
 #[derive(Clone, Debug)]
-#[repr(align(64))]
 pub(crate) struct FaceSide<S> {
     /// The face and its other edges, in the order of the edge's frame.
     wing: Wing,
     /// The apex in the edge's frame.
     apex: Apex<S>,
-    /// Lengths of the near and far edges.
-    near_length: S,
-    far_length: S,
     /// See [`FaceLayout::near_reversed`] and the three fields after it.
     near_reversed: bool,
     far_reversed: bool,
@@ -346,13 +344,11 @@ impl<S: Scalar> Unfolding<S> {
                 let near_reversed = frame_ends(mesh, &reversed, wing.near)[0] == wing.apex;
                 let far_reversed = frame_ends(mesh, &reversed, wing.far)[0] != wing.apex;
                 let (near, far) = (wing.near.index(), wing.far.index());
-                // The lengths of the other two edges are set below, once every edge is
-                // measured: a table of the apexes kept until then would take half as much
+                // Whether the other two edges have length zero is set below, once every edge
+                // is measured: a table of the apexes kept until then would take half as much
                 // memory again as the sides.
                 sides[mesh.side_slot(e, side)] = Some(FaceSide {
                     apex,
-                    near_length: S::zero(),
-                    far_length: S::zero(),
                     near_reversed,
                     far_reversed,
                     near_from_apex: near_reversed && anchored[near],
@@ -366,8 +362,6 @@ impl<S: Scalar> Unfolding<S> {
         }
         for face in sides.iter_mut().flatten() {
             let (near, far) = (face.wing.near.index(), face.wing.far.index());
-            face.near_length = edge_length[near].clone();
-            face.far_length = edge_length[far].clone();
             face.near_zero_length = zero_length[near];
             face.far_zero_length = zero_length[far];
         }
@@ -617,8 +611,8 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
             apex_x: &face.apex.x,
             apex_far_x: &face.apex.far_x,
             apex_h: &face.apex.h,
-            near_length: &face.near_length,
-            far_length: &face.far_length,
+            near_length: unfolding.length(face.wing.near),
+            far_length: unfolding.length(face.wing.far),
             near_reversed: face.near_reversed,
             far_reversed: face.far_reversed,
             near_from_apex: face.near_from_apex,
@@ -840,8 +834,8 @@ mod tests {
     }
 
     #[test]
-    fn a_face_side_of_the_f64_engine_takes_one_cache_line() {
-        assert_eq!(std::mem::size_of::<Option<FaceSide<f64>>>(), 64);
+    fn a_face_side_of_the_f64_engine_takes_48_bytes() {
+        assert_eq!(std::mem::size_of::<Option<FaceSide<f64>>>(), 48);
     }
 
     #[test]
