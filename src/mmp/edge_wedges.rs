@@ -1,21 +1,21 @@
-//! The final wedges of a propagation, grouped by edge: each edge's wedges in a boxed slice of
-//! their own, exactly sized (a pointer and a length per edge).
+//! The final wedges of a propagation, grouped by edge: each edge's wedges in a [`ThinVec`] of
+//! their own, exactly sized (a pointer per edge, and the length with the wedges: when only
+//! vertex distances are asked for, most edges have none left).
 
 use super::wedge::Wedge;
 use crate::mesh::EdgeId;
+use thin_vec::ThinVec;
 
 /// The final wedges of every edge, in edge order and sorted along each edge.
 #[derive(Clone, Debug)]
 pub(crate) struct EdgeWedges<S> {
-    lists: Vec<Box<[Wedge<S>]>>,
+    lists: Vec<ThinVec<Wedge<S>>>,
 }
 
 impl<S> EdgeWedges<S> {
-    /// The wedges of each edge, `lists[e]` sorted along edge `e`.
-    pub(crate) fn new(lists: Vec<Vec<Wedge<S>>>) -> Self {
-        EdgeWedges {
-            lists: lists.into_iter().map(Vec::into_boxed_slice).collect(),
-        }
+    /// The wedges of each edge, `lists[e]` sorted along edge `e` and exactly sized.
+    pub(crate) fn new(lists: Vec<ThinVec<Wedge<S>>>) -> Self {
+        EdgeWedges { lists }
     }
 
     /// The wedges of edge `e`, sorted along it.

@@ -2,7 +2,8 @@
 //! of entries (a wedge, what it keeps of its construction, whether it waits in the queue),
 //! sorted along the edge and disjoint. A list is one piece of memory, so that placing a new
 //! wedge reads its edge's wedges and nothing else (on a shared arena, every step of that search
-//! was a cache miss). A wedge arriving on an edge is cut into pieces with the wedges there by
+//! was a cache miss). A list is a [`ThinVec`]: one pointer per edge, its length and capacity
+//! kept with its wedges (most edges have no wedge at any time, and a `Vec` costs three words). A wedge arriving on an edge is cut into pieces with the wedges there by
 //! eq. (2) ([`intersect`](super::intersect)), and the list is rebuilt from the pieces.
 
 use super::edge_wedges::EdgeWedges;
@@ -15,6 +16,7 @@ use crate::mesh::{EdgeId, Side, SourceId, VertexId};
 use crate::scalar::{Scalar, Site, SourceDistance, FRONT_MARGIN};
 use std::cmp::Ordering;
 use std::ops::Range;
+use thin_vec::ThinVec;
 
 /// A wedge of an edge list: the wedge's fields but its edge (the list's), so that the queue
 /// state and the serial fit where the wedge has padding (64 bytes in the `f64` engine, not
@@ -194,13 +196,13 @@ fn find_near<S: Scalar>(list: &[Entry<S>], place: usize, serial: u32) -> Option<
 /// rebuild's code).
 #[cold]
 #[inline(never)]
-fn insert_many<T>(list: &mut Vec<T>, at: usize, entries: impl Iterator<Item = T>) {
+fn insert_many<T>(list: &mut ThinVec<T>, at: usize, entries: impl Iterator<Item = T>) {
     list.splice(at..at, entries);
 }
 
 /// The wedges of every edge of a running propagation.
 pub(crate) struct WedgeLists<S: Scalar> {
-    lists: Vec<Vec<Entry<S>>>,
+    lists: Vec<ThinVec<Entry<S>>>,
     /// When only vertex distances are asked for, whether each edge's wedges were given up
     /// ([`WedgeLists::close`]); `None`: every wedge is kept to the end.
     closed: Option<Vec<bool>>,
@@ -219,7 +221,9 @@ impl<S: Scalar> WedgeLists<S> {
     /// given up once no later wedge can win a point of it ([`WedgeLists::close`]).
     pub(crate) fn new(edge_count: usize, record_decisions: bool, vertices_only: bool) -> Self {
         WedgeLists {
-            lists: std::iter::repeat_with(Vec::new).take(edge_count).collect(),
+            lists: std::iter::repeat_with(ThinVec::new)
+                .take(edge_count)
+                .collect(),
             closed: vertices_only.then(|| vec![false; edge_count]),
             serials: vec![0; edge_count],
             entries: 0,
@@ -300,12 +304,14 @@ impl<S: Scalar> WedgeLists<S> {
             .all(|x| S::front_passed(&x.distance_function(), &x.b0, &x.b1, key));
         if covered && passed && list.iter().all(|x| !x.queued) {
             self.entries -= list.len();
-            *list = Vec::new();
+            *list = ThinVec::new();
             closed[e.index()] = true;
         }
     }
 
     /// The final wedges of every edge, each list exactly sized, moved out of their entries.
+    /// The table of lists is reused in place (a new one, allocated while the unfolding is
+    /// still held, made the run's peak).
     pub(crate) fn into_edge_wedges(self) -> EdgeWedges<S> {
         EdgeWedges::new(
             self.lists
@@ -313,7 +319,9 @@ impl<S: Scalar> WedgeLists<S> {
                 .enumerate()
                 .map(|(e, list)| {
                     let e = EdgeId(e as u32);
-                    list.into_iter().map(|x| x.wedge(e)).collect()
+                    let mut wedges = ThinVec::with_capacity(list.len());
+                    wedges.extend(list.into_iter().map(|x| x.wedge(e)));
+                    wedges
                 })
                 .collect(),
         )
@@ -637,7 +645,7 @@ impl<S: Scalar> WedgeLists<S> {
         }
         let bytes = self.entries * std::mem::size_of::<Entry<S>>()
             + self.lists.len()
-                * (std::mem::size_of::<Vec<Entry<S>>>() + std::mem::size_of::<u32>());
+                * (std::mem::size_of::<ThinVec<Entry<S>>>() + std::mem::size_of::<u32>());
         stats.peak_wedge_bytes = stats.peak_wedge_bytes.max(bytes);
     }
 }
