@@ -354,7 +354,7 @@ impl TriMesh {
     /// If `e` is not an edge of the mesh.
     pub fn edge_faces(&self, e: EdgeId) -> impl Iterator<Item = FaceId> + '_ {
         let extra = self.topology.extra_faces(e).iter().copied();
-        self.edge(e).faces.into_iter().flatten().chain(extra)
+        self.edge(e).faces().into_iter().flatten().chain(extra)
     }
 
     /// The side of edge `e` on which face `f` lies, if `f` is one of its faces.
@@ -363,7 +363,7 @@ impl TriMesh {
     /// If `e` is not an edge of the mesh.
     #[inline]
     pub fn side_of(&self, e: EdgeId, f: FaceId) -> Option<Side> {
-        let index = match self.edge(e).faces.iter().position(|&g| g == Some(f)) {
+        let index = match self.edge(e).faces().iter().position(|&g| g == Some(f)) {
             Some(side) => Some(side),
             None => self
                 .topology

@@ -11,17 +11,43 @@ use glam::DVec3;
 use rustc_hash::FxHashMap;
 
 /// An undirected edge: its two end vertices (`vertices[0] < vertices[1]`) and its first two
-/// faces.
-#[derive(Debug, Clone, PartialEq)]
+/// faces ([`Edge::faces`]). 16 bytes: a face is kept as its index, `NO_FACE` for none (an
+/// `Option<FaceId>` takes 8 bytes, and the edges are a large table of every run).
+#[derive(Clone, PartialEq)]
 pub struct Edge {
     /// End vertices; the edge's local x axis runs from `vertices[0]` to `vertices[1]`.
     pub vertices: [VertexId; 2],
-    /// The faces on sides 0 and 1; `faces[1]` is `None` on the boundary. An edge shared by
-    /// more than two faces has more sides ([`TriMesh::edge_faces`](super::TriMesh::edge_faces)).
-    pub faces: [Option<FaceId>; 2],
+    faces: [u32; 2],
+}
+
+/// No face on that side of an edge: never a face's index ([`TriMesh::new`](super::TriMesh::new)
+/// refuses meshes of that many faces).
+const NO_FACE: u32 = u32::MAX;
+
+impl std::fmt::Debug for Edge {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Edge")
+            .field("vertices", &self.vertices)
+            .field("faces", &self.faces())
+            .finish()
+    }
 }
 
 impl Edge {
+    /// The faces on sides 0 and 1; `faces()[1]` is `None` on the boundary. An edge shared by
+    /// more than two faces has more sides ([`TriMesh::edge_faces`](super::TriMesh::edge_faces)).
+    #[inline]
+    pub fn faces(&self) -> [Option<FaceId>; 2] {
+        [self.face(0), self.face(1)]
+    }
+
+    /// The face on side 0 or 1.
+    #[inline]
+    fn face(&self, side: usize) -> Option<FaceId> {
+        let f = self.faces[side];
+        (f != NO_FACE).then_some(FaceId(f))
+    }
+
     /// The end opposite to `v`, or `None` if `v` is not an end of this edge.
     pub fn other(&self, v: VertexId) -> Option<VertexId> {
         if self.vertices[0] == v {
@@ -35,7 +61,7 @@ impl Edge {
 
     /// Whether the edge has a single face.
     pub fn is_boundary(&self) -> bool {
-        self.faces[1].is_none()
+        self.faces[1] == NO_FACE
     }
 }
 
@@ -362,7 +388,7 @@ impl Topology {
                 let id = *edge_of.entry(key).or_insert_with(|| {
                     edges.push(Edge {
                         vertices: [VertexId(key.0), VertexId(key.1)],
-                        faces: [None, None],
+                        faces: [NO_FACE; 2],
                     });
                     forward.push([false; 2]);
                     (edges.len() - 1) as u32
@@ -372,15 +398,15 @@ impl Topology {
                     continue;
                 }
                 let edge = &mut edges[id as usize];
-                let slot = if edge.faces[0].is_none() {
+                let slot = if edge.faces[0] == NO_FACE {
                     0
-                } else if edge.faces[1].is_none() {
+                } else if edge.faces[1] == NO_FACE {
                     1
                 } else {
                     extra.push((id as usize, FaceId(fi as u32)));
                     continue;
                 };
-                edge.faces[slot] = Some(FaceId(fi as u32));
+                edge.faces[slot] = fi as u32;
                 forward[id as usize][slot] = a < b;
             }
             face_edges.push(fe);
@@ -395,7 +421,7 @@ impl Topology {
         let faces_of = |ei: usize| {
             let more = extra_of(&extra_start, &extra_faces, ei);
             edges[ei]
-                .faces
+                .faces()
                 .into_iter()
                 .flatten()
                 .chain(more.iter().copied())
@@ -441,7 +467,7 @@ impl Topology {
         report.inconsistently_oriented_edges = edges
             .iter()
             .zip(&forward)
-            .filter(|(e, f)| f[0] == f[1] && e.faces[1].is_some())
+            .filter(|(e, f)| f[0] == f[1] && !e.is_boundary())
             .count();
         report.boundary_edges = edges.iter().filter(|e| e.is_boundary()).count();
 
@@ -617,7 +643,7 @@ impl Topology {
     /// the topology of a side, for what the face's corners and edges already say.
     pub(super) fn wing(&self, faces: &[[u32; 3]], e: EdgeId, side: usize) -> Option<Wing> {
         let face = match side {
-            0 | 1 => self.edges[e.index()].faces[side]?,
+            0 | 1 => self.edges[e.index()].face(side)?,
             _ => *self.extra_faces(e).get(side - 2)?,
         };
         let corners = faces[face.index()];
@@ -667,5 +693,21 @@ impl Topology {
         let i = v.index();
         &self.vertex_edge_list
             [self.vertex_edge_start[i] as usize..self.vertex_edge_start[i + 1] as usize]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_edge_takes_16_bytes_and_tells_its_faces() {
+        assert_eq!(std::mem::size_of::<Edge>(), 16);
+        let edge = Edge {
+            vertices: [VertexId(0), VertexId(1)],
+            faces: [3, NO_FACE],
+        };
+        assert_eq!(edge.faces(), [Some(FaceId(3)), None]);
+        assert!(edge.is_boundary());
     }
 }

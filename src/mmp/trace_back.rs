@@ -734,7 +734,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 .mesh()
                 .side_of(next_edge, walk.face)
                 .expect("face of the edge");
-            let next_face = e.faces[1 - here.index()].ok_or_else(lost)?;
+            let next_face = e.faces()[1 - here.index()].ok_or_else(lost)?;
             walk = Walk {
                 edge: next_edge,
                 face: next_face,

@@ -165,7 +165,7 @@ fn straight_segments(mesh: &TriMesh, u: usize, max_faces: usize) -> Vec<(usize, 
                 .expect("face edge");
             let Some(next) = mesh
                 .edge(edge)
-                .faces
+                .faces()
                 .into_iter()
                 .flatten()
                 .find(|f| f.index() != s.face)
