@@ -162,13 +162,6 @@ impl Real {
     /// A value that divides by zero, or whose divisors cannot all be certified non-zero within
     /// the precision cap, is [`Certificate::Uncertified`] with sign zero.
     pub fn certified_sign(&self) -> (Sign, Certificate) {
-        self.certified_sign_with(true)
-    }
-
-    /// [`Real::certified_sign`]; `thorough` spends the most on a last resort (see
-    /// [`normal_form::zero_by_elimination`]), which a sign the engine can do without (asked
-    /// by [`CertifiedSign::proved_sign`]) does not.
-    fn certified_sign_with(&self, thorough: bool) -> (Sign, Certificate) {
         let node = &self.0;
         if let Err(cause) = check_divisors(node) {
             return (Sign::Zero, Certificate::Uncertified(cause));
@@ -212,9 +205,7 @@ impl Real {
                 }
             }
             if precision >= cap {
-                if normal_form::zero_over_atoms(node)
-                    || normal_form::zero_by_elimination(node, thorough)
-                {
+                if normal_form::zero_over_atoms(node) || normal_form::zero_by_elimination(node) {
                     return (
                         Sign::Zero,
                         Certificate::CertifiedZero(ZeroProof::NormalForm),
@@ -560,7 +551,7 @@ impl CertifiedSign for Real {
     fn proved_sign(&self) -> Option<Sign> {
         let (sign, certificate) = self
             .clear_certified_sign()
-            .unwrap_or_else(|| self.certified_sign_with(false));
+            .unwrap_or_else(|| self.certified_sign());
         if matches!(certificate, Certificate::Uncertified(_)) {
             return None;
         }

@@ -116,10 +116,9 @@ struct Tower {
     /// The atoms, by the address of the node each stands for (held, so that the address is
     /// not reused while the tower lives).
     atoms: HashMap<usize, (u32, Arc<Node>)>,
-    /// Normal forms over atoms, by the address of their node (held likewise), with the budget
-    /// they had: asked only of would-be uncertified decisions, so kept here rather than on
-    /// every node.
-    atom_forms: HashMap<usize, (Arc<Node>, NormalForm, Budget)>,
+    /// Normal forms over atoms, by the address of their node (held likewise): asked only of
+    /// would-be uncertified decisions, so kept here rather than on every node.
+    atom_forms: HashMap<usize, (Arc<Node>, NormalForm)>,
     /// Atoms standing for values known by their forms over atoms, by [`AtomKey`].
     keyed_atoms: HashMap<AtomKey, u32>,
     /// The symbols of integer radicals, by square class ([`square_class`]): radicals whose
@@ -689,26 +688,14 @@ impl NormalForm {
 
 /// Whether the node's normal form is zero by the elimination of its square roots
 /// ([`NormalForm::is_zero_by_elimination`]), over atoms where it has no normal form (see
-/// [`zero_over_atoms`]), with the budget of a last resort: the normal form under it, else the
-/// form over atoms of the cheap budget, else (if `atoms_again`) the form over atoms under it,
-/// where larger forms keep as expressions what were atoms. Costly: asked only of a zero that
-/// nothing else could prove; `atoms_again` costs the most.
-pub(crate) fn zero_by_elimination(node: &Arc<Node>, atoms_again: bool) -> bool {
-    let eliminated = |form: NormalForm| last_resort(|| form.is_zero_by_elimination(SPLIT_DEPTH));
-    if let Some(form) = last_resort(|| memoized(node)) {
-        return eliminated(form);
-    }
-    WORK_LEFT.with(|w| w.set(Budget::Cheap.work_per_test()));
-    eliminated(over_atoms(node)) || (atoms_again && eliminated(last_resort(|| over_atoms(node))))
-}
-
-/// `work` with the budget of a last resort ([`Budget::LastResort`]).
-fn last_resort<T>(work: impl FnOnce() -> T) -> T {
+/// [`zero_over_atoms`]). Costly: asked only of a zero that nothing else could prove.
+pub(crate) fn zero_by_elimination(node: &Arc<Node>) -> bool {
     BUDGET.with(|b| b.set(Budget::LastResort));
     WORK_LEFT.with(|w| w.set(Budget::LastResort.work_per_test()));
-    let done = work();
+    let form = memoized(node).unwrap_or_else(|| over_atoms(node));
+    let zero = form.is_zero_by_elimination(SPLIT_DEPTH);
     BUDGET.with(|b| b.set(Budget::Cheap));
-    done
+    zero
 }
 
 /// Whether the node's normal form is zero, by [`NormalForm::is_zero_by_squares`] where its
@@ -854,17 +841,10 @@ pub(crate) fn zero_over_atoms(node: &Arc<Node>) -> bool {
 /// need only a few terms above the atoms, and a smaller atom keeps the work per test small.
 const ATOM_TERMS: usize = 64;
 
-/// The node's normal form over atoms, memoized in this thread's tower; asked again under a
-/// larger budget, which may expand what was an atom.
+/// The node's normal form over atoms, memoized in this thread's tower.
 fn over_atoms(node: &Arc<Node>) -> NormalForm {
     let key = Arc::as_ptr(node) as usize;
-    let budget = budget();
-    let known = TOWER.with(|t| {
-        let t = t.borrow();
-        let (_, nf, had) = t.atom_forms.get(&key)?;
-        (*had >= budget).then(|| nf.clone())
-    });
-    if let Some(nf) = known {
+    if let Some(nf) = TOWER.with(|t| t.borrow().atom_forms.get(&key).map(|(_, nf)| nf.clone())) {
         return nf;
     }
     let pair =
@@ -895,7 +875,7 @@ fn over_atoms(node: &Arc<Node>) -> NormalForm {
     TOWER.with(|t| {
         t.borrow_mut()
             .atom_forms
-            .insert(key, (node.clone(), nf.clone(), budget))
+            .insert(key, (node.clone(), nf.clone()))
     });
     nf
 }
@@ -1030,13 +1010,13 @@ mod tests {
     fn a_root_times_a_hidden_zero_is_proved_zero_by_elimination() {
         let zero = zero_times_a_root(Real::from_integer(0));
         assert!(normal_form(&zero.0).is_some_and(|form| !form.is_zero()));
-        assert!(zero_by_elimination(&zero.0, true));
+        assert!(zero_by_elimination(&zero.0));
     }
 
     #[test]
     fn a_root_times_a_tiny_non_zero_is_not_proved_zero() {
         let tiny =
             Real::from_integer(1) / Real::from_rational(Rational::from(Integer::from(2).pow(200)));
-        assert!(!zero_by_elimination(&zero_times_a_root(tiny).0, true));
+        assert!(!zero_by_elimination(&zero_times_a_root(tiny).0));
     }
 }
