@@ -11,7 +11,7 @@
 //!
 //! The normal form is unique only when the symbols are independent, which is not checked: a
 //! zero normal form proves the value zero; a non-zero one proves nothing, and the refinement
-//! with the separation bound takes over. Normal forms that grow past their [`Budget`] give up.
+//! with the separation bound takes over. Normal forms that grow past [`MAX_TERMS`] give up.
 //!
 //! The square root of a form that is a square in the tower is that square's root, not a new
 //! symbol ([`NormalForm::root_in_tower`], checked by squaring): a length along a straight line
@@ -38,57 +38,22 @@ use std::sync::Arc;
 
 mod coprime;
 
-/// What a normal form may cost before it is abandoned (and the zero left to the separation
-/// bound): the forms asked of every sign that a filter leaves open are cheap; the last resort
-/// of a zero that nothing else could prove may cost more.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-pub(crate) enum Budget {
-    Cheap,
-    LastResort,
-}
+/// Normal forms with more terms than this are abandoned.
+const MAX_TERMS: usize = 256;
 
-impl Budget {
-    /// Normal forms with more terms than this are abandoned.
-    fn terms(self) -> usize {
-        match self {
-            Budget::Cheap => 256,
-            Budget::LastResort => 4096,
-        }
-    }
-
-    /// Products needing more term-by-term multiplications than this are abandoned.
-    fn product_work(self) -> usize {
-        match self {
-            Budget::Cheap => 2048,
-            Budget::LastResort => 65_536,
-        }
-    }
-
-    /// Term-by-term multiplications one zero test may spend, over all the nodes it
-    /// normalises.
-    fn work_per_test(self) -> usize {
-        match self {
-            Budget::Cheap => 50_000,
-            Budget::LastResort => 5_000_000,
-        }
-    }
-}
-
-/// A node's normal form in the tower of id `tower`, `None` where it could not be had within
-/// `budget` (asked again under a larger one).
-pub(crate) struct Memo {
-    tower: u64,
-    form: Option<NormalForm>,
-    budget: Budget,
-}
+/// Products needing more term-by-term multiplications than this are abandoned.
+const MAX_PRODUCT_WORK: usize = 2048;
 
 /// Normal forms with a coefficient larger than this (numerator plus denominator bits) are
 /// abandoned: rational arithmetic on them costs more than the separation bound would.
 const MAX_COEFFICIENT_BITS: u64 = 16384;
 
+/// Term-by-term multiplications one zero test may spend, over all the nodes it normalises;
+/// a test that runs out leaves the zero to the separation bound.
+const WORK_PER_TEST: usize = 50_000;
+
 thread_local! {
     static WORK_LEFT: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
-    static BUDGET: std::cell::Cell<Budget> = const { std::cell::Cell::new(Budget::Cheap) };
     /// This thread's tower: a propagation starts a new one ([`new_tower`]), so that its symbols
     /// neither pile up from run to run nor are shared (and locked) between threads.
     static TOWER: RefCell<Tower> = RefCell::new(Tower::new());
@@ -224,7 +189,7 @@ impl NormalForm {
 
     fn checked(self) -> Option<NormalForm> {
         let small = |c: &Rational| c.size_bits() <= MAX_COEFFICIENT_BITS;
-        (self.0.len() <= budget().terms() && self.0.values().all(small)).then_some(self)
+        (self.0.len() <= MAX_TERMS && self.0.values().all(small)).then_some(self)
     }
 
     fn add(&self, other: &NormalForm, sign: i32) -> Option<NormalForm> {
@@ -259,7 +224,7 @@ impl NormalForm {
 
     fn mul(&self, other: &NormalForm) -> Option<NormalForm> {
         let work = self.0.len() * other.0.len();
-        if work > budget().product_work()
+        if work > MAX_PRODUCT_WORK
             || WORK_LEFT.with(|w| w.replace(w.get().saturating_sub(work))) < work
         {
             return None;
@@ -300,7 +265,7 @@ impl NormalForm {
                     term = term.mul(&square_of(s)?)?;
                 }
                 sum.accumulate(&term, 1);
-                if sum.0.len() > budget().terms() {
+                if sum.0.len() > MAX_TERMS {
                     return None;
                 }
             }
@@ -690,18 +655,15 @@ impl NormalForm {
 /// ([`NormalForm::is_zero_by_elimination`]), over atoms where it has no normal form (see
 /// [`zero_over_atoms`]). Costly: asked only of a zero that nothing else could prove.
 pub(crate) fn zero_by_elimination(node: &Arc<Node>) -> bool {
-    BUDGET.with(|b| b.set(Budget::LastResort));
-    WORK_LEFT.with(|w| w.set(Budget::LastResort.work_per_test()));
+    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
     let form = memoized(node).unwrap_or_else(|| over_atoms(node));
-    let zero = form.is_zero_by_elimination(SPLIT_DEPTH);
-    BUDGET.with(|b| b.set(Budget::Cheap));
-    zero
+    form.is_zero_by_elimination(SPLIT_DEPTH)
 }
 
 /// Whether the node's normal form is zero, by [`NormalForm::is_zero_by_squares`] where its
 /// symbols may not be independent.
 pub(crate) fn zero_by_squares(node: &Arc<Node>) -> bool {
-    WORK_LEFT.with(|w| w.set(Budget::Cheap.work_per_test()));
+    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
     memoized(node).is_some_and(|nf| nf.is_zero_by_squares(4))
 }
 
@@ -822,7 +784,7 @@ fn sqrt_of_rational(r: &Rational) -> NormalForm {
 /// The normal form of a node's value, memoized on the node; `None` if it grew too large or
 /// a square root's radicand could not be shown positive.
 pub(crate) fn normal_form(node: &Arc<Node>) -> Option<NormalForm> {
-    WORK_LEFT.with(|w| w.set(Budget::Cheap.work_per_test()));
+    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
     memoized(node)
 }
 
@@ -833,7 +795,7 @@ pub(crate) fn normal_form(node: &Arc<Node>) -> Option<NormalForm> {
 /// over atoms is a symbol only where its radicand is shown positive). Costly on deep
 /// expressions: asked only of a zero that nothing else could prove.
 pub(crate) fn zero_over_atoms(node: &Arc<Node>) -> bool {
-    WORK_LEFT.with(|w| w.set(Budget::Cheap.work_per_test()));
+    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
     over_atoms(node).is_zero()
 }
 
@@ -933,26 +895,17 @@ fn atom(node: &Arc<Node>) -> NormalForm {
     NormalForm::monomial(Rational::from(1), vec![id])
 }
 
-/// The node's normal form in this thread's tower, memoized on the node with the tower's id
-/// and the budget it had: a form abandoned under a smaller budget is asked again.
+/// The node's normal form in this thread's tower, memoized on the node with the tower's id.
 fn memoized(node: &Arc<Node>) -> Option<NormalForm> {
-    let (tower, budget) = (tower_id(), budget());
-    if let Some(memo) = node.normal_form.lock().expect("memo lock").as_ref() {
-        if memo.tower == tower && (memo.form.is_some() || memo.budget >= budget) {
-            return memo.form.clone();
+    let tower = tower_id();
+    if let Some((id, nf)) = node.normal_form.lock().expect("memo lock").as_ref() {
+        if *id == tower {
+            return nf.clone();
         }
     }
-    let form = compute(node);
-    *node.normal_form.lock().expect("memo lock") = Some(Memo {
-        tower,
-        form: form.clone(),
-        budget,
-    });
-    form
-}
-
-fn budget() -> Budget {
-    BUDGET.with(|b| b.get())
+    let nf = compute(node);
+    *node.normal_form.lock().expect("memo lock") = Some((tower, nf.clone()));
+    nf
 }
 
 fn compute(node: &Arc<Node>) -> Option<NormalForm> {
