@@ -949,13 +949,16 @@ mod tests {
         Real::from_integer(i).sqrt()
     }
 
-    /// `sqrt 7 (sqrt 6 - sqrt 2 sqrt 3 + sqrt 10 - sqrt 2 sqrt 5)` with `sqrt 7` the last symbol:
-    /// zero, as `sqrt 7` times a zero of radicals whose symbols are not independent. Its part
-    /// free of `sqrt 7` is zero as it stands, so no sign tells it apart from the other part.
+    /// `sqrt 7 (sqrt 3 sqrt(1 + sqrt 2) - sqrt(3 + 3 sqrt 2))` with `sqrt 7` the last symbol:
+    /// zero, as `sqrt 7` times a zero of nested radicals (so not decided over a coprime basis of
+    /// integer radicals) whose symbols are not independent. Its part free of `sqrt 7` is zero as
+    /// it stands, so no sign tells it apart from the other part.
     fn zero_times_a_root(tiny: Real) -> Real {
         new_tower();
-        let inner = root(6) - &(root(2) * &root(3)) + &root(10) - &(root(2) * &root(5)) + &tiny;
-        assert!(normal_form(&inner.0).is_some_and(|form| !form.is_zero()));
+        let nested = |c: i64| (Real::from_integer(c) + &(Real::from_integer(c) * &root(2))).sqrt();
+        let inner = root(3) * &nested(1) - &nested(3) + &tiny;
+        let form = normal_form(&inner.0).expect("a normal form");
+        assert!(!form.is_zero() && form.is_zero_over_coprime_radicals().is_none());
         root(7) * &inner
     }
 
