@@ -37,6 +37,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
 mod coprime;
+mod product;
 
 /// Normal forms with more terms than this are abandoned.
 const MAX_TERMS: usize = 256;
@@ -220,57 +221,6 @@ impl NormalForm {
                 .map(|(m, c)| (m.clone(), -c.clone()))
                 .collect(),
         )
-    }
-
-    fn mul(&self, other: &NormalForm) -> Option<NormalForm> {
-        let work = self.0.len() * other.0.len();
-        if work > MAX_PRODUCT_WORK
-            || WORK_LEFT.with(|w| w.replace(w.get().saturating_sub(work))) < work
-        {
-            return None;
-        }
-        let mut sum = NormalForm::default();
-        for (m1, c1) in &self.0 {
-            for (m2, c2) in &other.0 {
-                let (mut product, mut common) = (Vec::new(), Vec::new());
-                let (mut i, mut j) = (0, 0);
-                while i < m1.len() || j < m2.len() {
-                    match (m1.get(i), m2.get(j)) {
-                        (Some(a), Some(b)) if a == b => {
-                            if is_atom(*a) {
-                                product.extend([*a, *b]);
-                            } else {
-                                common.push(*a);
-                            }
-                            i += 1;
-                            j += 1;
-                        }
-                        (Some(a), Some(b)) if a < b => {
-                            product.push(*a);
-                            i += 1;
-                        }
-                        (Some(a), None) => {
-                            product.push(*a);
-                            i += 1;
-                        }
-                        (_, Some(b)) => {
-                            product.push(*b);
-                            j += 1;
-                        }
-                        (None, None) => unreachable!("loop condition"),
-                    }
-                }
-                let mut term = NormalForm::monomial(c1.clone() * c2, product);
-                for s in common {
-                    term = term.mul(&square_of(s)?)?;
-                }
-                sum.accumulate(&term, 1);
-                if sum.0.len() > MAX_TERMS {
-                    return None;
-                }
-            }
-        }
-        sum.checked()
     }
 
     fn div(&self, other: &NormalForm) -> Option<NormalForm> {
