@@ -10,7 +10,7 @@
 use super::{is_atom, square_of, Monomial, NormalForm, MAX_PRODUCT_WORK, MAX_TERMS, WORK_LEFT};
 use crate::scalar::bignum::{Integer, Rational};
 use std::collections::btree_map::Entry;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 impl NormalForm {
     pub(super) fn mul(&self, other: &NormalForm) -> Option<NormalForm> {
@@ -23,16 +23,17 @@ impl NormalForm {
         let (left, l) = self.over_common_denominator();
         let (right, r) = other.over_common_denominator();
         let denominator = l.times(&r);
+        let squares = shared_integer_squares(self, other);
         let mut integral: BTreeMap<Monomial, Integer> = BTreeMap::new();
         let mut rest = NormalForm::default();
         for (m1, a) in &left {
             for (m2, b) in &right {
                 let (product, common) = merged(m1, m2);
-                let squares: Option<Vec<Integer>> =
-                    common.iter().map(|&s| integer_square(s)).collect();
-                match squares {
+                let integral_squares: Option<Vec<&Integer>> =
+                    common.iter().map(|s| squares[s].as_ref()).collect();
+                match integral_squares {
                     Some(squares) => {
-                        let c = squares.iter().fold(a.times(b), |c, q| c.times(q));
+                        let c = squares.into_iter().fold(a.times(b), |c, q| c.times(q));
                         match integral.entry(product) {
                             Entry::Vacant(entry) => {
                                 entry.insert(c);
@@ -120,8 +121,17 @@ fn merged(m1: &Monomial, m2: &Monomial) -> (Monomial, Vec<u32>) {
     (product, common)
 }
 
-/// The square of a symbol, if it is an integer.
-fn integer_square(s: u32) -> Option<Integer> {
-    let square = square_of(s)?.as_rational()?;
-    square.denom().is_one().then(|| square.numer())
+/// The square roots in both forms, each with its square if that is an integer.
+fn shared_integer_squares(f: &NormalForm, g: &NormalForm) -> BTreeMap<u32, Option<Integer>> {
+    let symbols =
+        |form: &NormalForm| -> BTreeSet<u32> { form.0.keys().flatten().copied().collect() };
+    let integer_square = |s: u32| {
+        let square = square_of(s)?.as_rational()?;
+        square.denom().is_one().then(|| square.numer())
+    };
+    symbols(f)
+        .intersection(&symbols(g))
+        .filter(|&&s| !is_atom(s))
+        .map(|&s| (s, integer_square(s)))
+        .collect()
 }
