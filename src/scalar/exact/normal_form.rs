@@ -925,4 +925,22 @@ mod tests {
             Real::from_integer(1) / Real::from_rational(Rational::from(Integer::from(2).pow(200)));
         assert!(!zero_by_elimination(&zero_times_a_root(tiny).0));
     }
+
+    /// `(sqrt 2 / 2 + sqrt 3 / 3 + 1 / 5)^2`, expanded by hand: products of unequal
+    /// denominators fall on the rational term (`1/2 + 1/3 + 1/25 = 131/150`), one product
+    /// on each other monomial.
+    #[test]
+    fn a_square_sums_the_products_that_fall_on_one_monomial() {
+        new_tower();
+        let q = |n: i64, d: i64| {
+            Real::from_rational(Rational::new(Integer::from(n), Integer::from(d)).expect("d > 0"))
+        };
+        let x = q(1, 2) * &root(2) + &(q(1, 3) * &root(3)) + &q(1, 5);
+        let expanded = q(131, 150)
+            + &(q(1, 3) * &root(2) * &root(3))
+            + &(q(1, 5) * &root(2))
+            + &(q(2, 15) * &root(3));
+        let square = normal_form(&(x.clone() * &x).0).expect("a normal form");
+        assert_eq!(Some(square), normal_form(&expanded.0));
+    }
 }

@@ -1,16 +1,20 @@
-//! The product of two normal forms, summed over integers.
+//! The product of two normal forms, each of its terms summed over integers.
 //!
 //! A product of rationals, and a sum, each reduce their result by a gcd, and on large forms
 //! those gcds were most of the cost of a normal form (more than half of the exact degeneracy
-//! corpus's time went to GMP's gcd). So both factors are put over a common denominator, the
-//! products of their coefficients are summed as integers, and each term of the result is
-//! reduced once. Pairs of monomials that share a square root whose square is not an integer
-//! (a nested radical) are multiplied out in rationals, as before.
+//! corpus's time went to GMP's gcd): squaring a form of `n` terms adds `n^2` products into far
+//! fewer terms. So the products that fall on one monomial are summed as integers over their
+//! common denominator and reduced once; a monomial reached by one product alone is that
+//! product of rationals. Pairs of monomials that share a square root whose square is not an
+//! integer (a nested radical) are multiplied out through that square, as before.
 
-use super::{is_atom, square_of, Monomial, NormalForm, MAX_PRODUCT_WORK, MAX_TERMS, WORK_LEFT};
+use super::{is_atom, square_of, Monomial, NormalForm, MAX_PRODUCT_WORK, WORK_LEFT};
 use crate::scalar::bignum::{Integer, Rational};
-use std::collections::btree_map::Entry;
 use std::collections::{BTreeMap, BTreeSet};
+
+/// One product of a term of each factor: their coefficients and the integer squares of the
+/// roots they share.
+type Product<'a> = (&'a Rational, &'a Rational, Vec<&'a Integer>);
 
 impl NormalForm {
     pub(super) fn mul(&self, other: &NormalForm) -> Option<NormalForm> {
@@ -20,71 +24,61 @@ impl NormalForm {
         {
             return None;
         }
-        let (left, l) = self.over_common_denominator();
-        let (right, r) = other.over_common_denominator();
-        let denominator = l.times(&r);
         let squares = shared_integer_squares(self, other);
-        let mut integral: BTreeMap<Monomial, Integer> = BTreeMap::new();
+        let mut by_monomial: BTreeMap<Monomial, Vec<Product>> = BTreeMap::new();
         let mut rest = NormalForm::default();
-        for (m1, a) in &left {
-            for (m2, b) in &right {
+        for (m1, c1) in &self.0 {
+            for (m2, c2) in &other.0 {
                 let (product, common) = merged(m1, m2);
-                let integral_squares: Option<Vec<&Integer>> =
+                let integer_squares: Option<Vec<&Integer>> =
                     common.iter().map(|s| squares[s].as_ref()).collect();
-                match integral_squares {
-                    Some(squares) => {
-                        let c = squares.into_iter().fold(a.times(b), |c, q| c.times(q));
-                        match integral.entry(product) {
-                            Entry::Vacant(entry) => {
-                                entry.insert(c);
-                            }
-                            Entry::Occupied(mut entry) => {
-                                let sum = entry.get().plus(&c);
-                                if sum.is_zero() {
-                                    entry.remove();
-                                } else {
-                                    *entry.get_mut() = sum;
-                                }
-                            }
-                        }
-                    }
+                match integer_squares {
+                    Some(q) => by_monomial.entry(product).or_default().push((c1, c2, q)),
                     None => {
-                        let c = Rational::ratio(a.times(b), denominator.clone());
-                        let mut term = NormalForm::monomial(c, product);
+                        let mut term = NormalForm::monomial(c1.clone() * c2, product);
                         for s in common {
                             term = term.mul(&square_of(s)?)?;
                         }
                         rest.accumulate(&term, 1);
                     }
                 }
-                if integral.len() + rest.0.len() > MAX_TERMS {
-                    return None;
-                }
             }
         }
-        for (m, n) in integral {
-            let term = NormalForm::monomial(Rational::ratio(n, denominator.clone()), m);
-            rest.accumulate(&term, 1);
+        for (m, products) in by_monomial {
+            rest.accumulate(&NormalForm::monomial(sum(&products), m), 1);
         }
         rest.checked()
     }
+}
 
-    /// The coefficients as integers over one common denominator, with that denominator.
-    fn over_common_denominator(&self) -> (Vec<(&Monomial, Integer)>, Integer) {
-        let mut common = Integer::from(1);
-        for c in self.0.values() {
-            let d = c.denom();
-            if !common.is_divisible(&d) {
-                common = common.times(&d.div_exact(&common.gcd(&d)));
-            }
-        }
-        let scaled = self
-            .0
-            .iter()
-            .map(|(m, c)| (m, c.numer().times(&common.div_exact(&c.denom()))))
-            .collect();
-        (scaled, common)
+/// The sum of the products: one product in rationals, several over their common
+/// denominator, reduced once.
+fn sum(products: &[Product]) -> Rational {
+    let times_squares = |c: Integer, q: &[&Integer]| q.iter().fold(c, |c, q| c.times(q));
+    if let [(c1, c2, q)] = products {
+        let product = (*c1).clone() * *c2;
+        return if q.is_empty() {
+            product
+        } else {
+            product * Rational::from(times_squares(Integer::from(1), q))
+        };
     }
+    let (mut numerator, mut denominator) = (Integer::from(0), Integer::from(1));
+    for (c1, c2, q) in products {
+        let n = times_squares(c1.numer().times(&c2.numer()), q);
+        let d = c1.denom().times(&c2.denom());
+        if d == denominator {
+            numerator = numerator.plus(&n);
+        } else if denominator.is_divisible(&d) {
+            numerator = numerator.plus(&n.times(&denominator.div_exact(&d)));
+        } else {
+            let g = denominator.gcd(&d);
+            let (widen, scale) = (d.div_exact(&g), denominator.div_exact(&g));
+            numerator = numerator.times(&widen).plus(&n.times(&scale));
+            denominator = denominator.times(&widen);
+        }
+    }
+    Rational::ratio(numerator, denominator)
 }
 
 /// The product of two monomials, without the square roots they share, and those roots (whose
