@@ -20,7 +20,7 @@
 
 use super::super::bignum::{Float, Rational};
 use super::super::{Interval, Sign};
-use super::normal_form::NormalForm;
+use super::normal_form::Memo;
 use std::collections::HashSet;
 use std::hash::{Hash, Hasher};
 use std::sync::{Arc, Mutex, OnceLock};
@@ -67,8 +67,9 @@ pub(crate) struct Node {
     /// The outcome of checking those divisors, once known.
     pub(crate) divisors_checked: OnceLock<DivisorCheck>,
     pub(crate) cache: Mutex<Option<Enclosure>>,
-    /// The normal form, with the id of the tower it is written in (see `normal_form.rs`).
-    pub(crate) normal_form: Mutex<Option<(u64, Option<NormalForm>)>>,
+    /// The normal form, with the tower it is written in and the budget it had (see
+    /// `normal_form.rs`).
+    pub(crate) normal_form: Mutex<Option<Memo>>,
     /// A hash of the expression: equal for equal expressions, whichever nodes hold them.
     hash: u64,
     /// Whether the node is zero by its structure (`x - x` or `0 * x` of an expression `x`),

@@ -11,7 +11,7 @@
 //!
 //! The normal form is unique only when the symbols are independent, which is not checked: a
 //! zero normal form proves the value zero; a non-zero one proves nothing, and the refinement
-//! with the separation bound takes over. Normal forms that grow past [`MAX_TERMS`] give up.
+//! with the separation bound takes over. Normal forms that grow past their [`Budget`] give up.
 //!
 //! The square root of a form that is a square in the tower is that square's root, not a new
 //! symbol ([`NormalForm::root_in_tower`], checked by squaring): a length along a straight line
@@ -39,22 +39,57 @@ use std::sync::Arc;
 mod coprime;
 mod product;
 
-/// Normal forms with more terms than this are abandoned.
-const MAX_TERMS: usize = 256;
+/// What a normal form may cost before it is abandoned (and the zero left to the separation
+/// bound): the forms asked of every sign that a filter leaves open are cheap; the last resort
+/// of a zero that nothing else could prove may cost more.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum Budget {
+    Cheap,
+    LastResort,
+}
 
-/// Products needing more term-by-term multiplications than this are abandoned.
-const MAX_PRODUCT_WORK: usize = 2048;
+impl Budget {
+    /// Normal forms with more terms than this are abandoned.
+    fn terms(self) -> usize {
+        match self {
+            Budget::Cheap => 256,
+            Budget::LastResort => 4096,
+        }
+    }
+
+    /// Products needing more term-by-term multiplications than this are abandoned.
+    fn product_work(self) -> usize {
+        match self {
+            Budget::Cheap => 2048,
+            Budget::LastResort => 65_536,
+        }
+    }
+
+    /// Term-by-term multiplications one zero test may spend, over all the nodes it
+    /// normalises.
+    fn work_per_test(self) -> usize {
+        match self {
+            Budget::Cheap => 50_000,
+            Budget::LastResort => 5_000_000,
+        }
+    }
+}
+
+/// A node's normal form in the tower of id `tower`, `None` where it could not be had within
+/// `budget` (asked again under a larger one).
+pub(crate) struct Memo {
+    tower: u64,
+    form: Option<NormalForm>,
+    budget: Budget,
+}
 
 /// Normal forms with a coefficient larger than this (numerator plus denominator bits) are
 /// abandoned: rational arithmetic on them costs more than the separation bound would.
 const MAX_COEFFICIENT_BITS: u64 = 16384;
 
-/// Term-by-term multiplications one zero test may spend, over all the nodes it normalises;
-/// a test that runs out leaves the zero to the separation bound.
-const WORK_PER_TEST: usize = 50_000;
-
 thread_local! {
     static WORK_LEFT: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+    static BUDGET: std::cell::Cell<Budget> = const { std::cell::Cell::new(Budget::Cheap) };
     /// This thread's tower: a propagation starts a new one ([`new_tower`]), so that its symbols
     /// neither pile up from run to run nor are shared (and locked) between threads.
     static TOWER: RefCell<Tower> = RefCell::new(Tower::new());
@@ -82,9 +117,10 @@ struct Tower {
     /// The atoms, by the address of the node each stands for (held, so that the address is
     /// not reused while the tower lives).
     atoms: HashMap<usize, (u32, Arc<Node>)>,
-    /// Normal forms over atoms, by the address of their node (held likewise): asked only of
-    /// would-be uncertified decisions, so kept here rather than on every node.
-    atom_forms: HashMap<usize, (Arc<Node>, NormalForm)>,
+    /// Normal forms over atoms, by the address of their node (held likewise), with the budget
+    /// they had: asked only of would-be uncertified decisions, so kept here rather than on
+    /// every node.
+    atom_forms: HashMap<usize, (Arc<Node>, NormalForm, Budget)>,
     /// Atoms standing for values known by their forms over atoms, by [`AtomKey`].
     keyed_atoms: HashMap<AtomKey, u32>,
     /// The symbols of integer radicals, by square class ([`square_class`]): radicals whose
@@ -190,7 +226,7 @@ impl NormalForm {
 
     fn checked(self) -> Option<NormalForm> {
         let small = |c: &Rational| c.size_bits() <= MAX_COEFFICIENT_BITS;
-        (self.0.len() <= MAX_TERMS && self.0.values().all(small)).then_some(self)
+        (self.0.len() <= budget().terms() && self.0.values().all(small)).then_some(self)
     }
 
     fn add(&self, other: &NormalForm, sign: i32) -> Option<NormalForm> {
@@ -603,17 +639,39 @@ impl NormalForm {
 
 /// Whether the node's normal form is zero by the elimination of its square roots
 /// ([`NormalForm::is_zero_by_elimination`]), over atoms where it has no normal form (see
-/// [`zero_over_atoms`]). Costly: asked only of a zero that nothing else could prove.
-pub(crate) fn zero_by_elimination(node: &Arc<Node>) -> bool {
-    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
-    let form = memoized(node).unwrap_or_else(|| over_atoms(node));
-    form.is_zero_by_elimination(SPLIT_DEPTH)
+/// [`zero_over_atoms`]). Costly: asked only of a zero that nothing else could prove. First
+/// within the cheap budget; failing that, if `thorough`, with the budget of a last resort: the
+/// normal form under it, else the form over atoms of the cheap budget, else the form over atoms
+/// under it, where larger forms keep as expressions what were atoms.
+pub(crate) fn zero_by_elimination(node: &Arc<Node>, thorough: bool) -> bool {
+    let eliminated = |form: &NormalForm| form.is_zero_by_elimination(SPLIT_DEPTH);
+    WORK_LEFT.with(|w| w.set(Budget::Cheap.work_per_test()));
+    let cheap = memoized(node).unwrap_or_else(|| over_atoms(node));
+    if eliminated(&cheap) {
+        return true;
+    }
+    if !thorough {
+        return false;
+    }
+    if let Some(form) = last_resort(|| memoized(node)) {
+        return last_resort(|| eliminated(&form));
+    }
+    last_resort(|| eliminated(&cheap)) || last_resort(|| eliminated(&over_atoms(node)))
+}
+
+/// `work` with the budget of a last resort ([`Budget::LastResort`]).
+fn last_resort<T>(work: impl FnOnce() -> T) -> T {
+    BUDGET.with(|b| b.set(Budget::LastResort));
+    WORK_LEFT.with(|w| w.set(Budget::LastResort.work_per_test()));
+    let done = work();
+    BUDGET.with(|b| b.set(Budget::Cheap));
+    done
 }
 
 /// Whether the node's normal form is zero, by [`NormalForm::is_zero_by_squares`] where its
 /// symbols may not be independent.
 pub(crate) fn zero_by_squares(node: &Arc<Node>) -> bool {
-    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
+    WORK_LEFT.with(|w| w.set(Budget::Cheap.work_per_test()));
     memoized(node).is_some_and(|nf| nf.is_zero_by_squares(4))
 }
 
@@ -734,7 +792,7 @@ fn sqrt_of_rational(r: &Rational) -> NormalForm {
 /// The normal form of a node's value, memoized on the node; `None` if it grew too large or
 /// a square root's radicand could not be shown positive.
 pub(crate) fn normal_form(node: &Arc<Node>) -> Option<NormalForm> {
-    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
+    WORK_LEFT.with(|w| w.set(Budget::Cheap.work_per_test()));
     memoized(node)
 }
 
@@ -745,7 +803,7 @@ pub(crate) fn normal_form(node: &Arc<Node>) -> Option<NormalForm> {
 /// over atoms is a symbol only where its radicand is shown positive). Costly on deep
 /// expressions: asked only of a zero that nothing else could prove.
 pub(crate) fn zero_over_atoms(node: &Arc<Node>) -> bool {
-    WORK_LEFT.with(|w| w.set(WORK_PER_TEST));
+    WORK_LEFT.with(|w| w.set(Budget::Cheap.work_per_test()));
     over_atoms(node).is_zero()
 }
 
@@ -753,10 +811,17 @@ pub(crate) fn zero_over_atoms(node: &Arc<Node>) -> bool {
 /// need only a few terms above the atoms, and a smaller atom keeps the work per test small.
 const ATOM_TERMS: usize = 64;
 
-/// The node's normal form over atoms, memoized in this thread's tower.
+/// The node's normal form over atoms, memoized in this thread's tower; asked again under a
+/// larger budget, which may expand what was an atom.
 fn over_atoms(node: &Arc<Node>) -> NormalForm {
     let key = Arc::as_ptr(node) as usize;
-    if let Some(nf) = TOWER.with(|t| t.borrow().atom_forms.get(&key).map(|(_, nf)| nf.clone())) {
+    let budget = budget();
+    let known = TOWER.with(|t| {
+        let t = t.borrow();
+        let (_, nf, had) = t.atom_forms.get(&key)?;
+        (*had >= budget).then(|| nf.clone())
+    });
+    if let Some(nf) = known {
         return nf;
     }
     let pair =
@@ -787,7 +852,7 @@ fn over_atoms(node: &Arc<Node>) -> NormalForm {
     TOWER.with(|t| {
         t.borrow_mut()
             .atom_forms
-            .insert(key, (node.clone(), nf.clone()))
+            .insert(key, (node.clone(), nf.clone(), budget))
     });
     nf
 }
@@ -845,17 +910,26 @@ fn atom(node: &Arc<Node>) -> NormalForm {
     NormalForm::monomial(Rational::from(1), vec![id])
 }
 
-/// The node's normal form in this thread's tower, memoized on the node with the tower's id.
+/// The node's normal form in this thread's tower, memoized on the node with the tower's id
+/// and the budget it had: a form abandoned under a smaller budget is asked again.
 fn memoized(node: &Arc<Node>) -> Option<NormalForm> {
-    let tower = tower_id();
-    if let Some((id, nf)) = node.normal_form.lock().expect("memo lock").as_ref() {
-        if *id == tower {
-            return nf.clone();
+    let (tower, budget) = (tower_id(), budget());
+    if let Some(memo) = node.normal_form.lock().expect("memo lock").as_ref() {
+        if memo.tower == tower && (memo.form.is_some() || memo.budget >= budget) {
+            return memo.form.clone();
         }
     }
-    let nf = compute(node);
-    *node.normal_form.lock().expect("memo lock") = Some((tower, nf.clone()));
-    nf
+    let form = compute(node);
+    *node.normal_form.lock().expect("memo lock") = Some(Memo {
+        tower,
+        form: form.clone(),
+        budget,
+    });
+    form
+}
+
+fn budget() -> Budget {
+    BUDGET.with(|b| b.get())
 }
 
 fn compute(node: &Arc<Node>) -> Option<NormalForm> {
@@ -916,14 +990,14 @@ mod tests {
     fn a_root_times_a_hidden_zero_is_proved_zero_by_elimination() {
         let zero = zero_times_a_root(Real::from_integer(0));
         assert!(normal_form(&zero.0).is_some_and(|form| !form.is_zero()));
-        assert!(zero_by_elimination(&zero.0));
+        assert!(zero_by_elimination(&zero.0, true));
     }
 
     #[test]
     fn a_root_times_a_tiny_non_zero_is_not_proved_zero() {
         let tiny =
             Real::from_integer(1) / Real::from_rational(Rational::from(Integer::from(2).pow(200)));
-        assert!(!zero_by_elimination(&zero_times_a_root(tiny).0));
+        assert!(!zero_by_elimination(&zero_times_a_root(tiny).0, true));
     }
 
     /// `(sqrt 2 / 2 + sqrt 3 / 3 + 1 / 5)^2`, expanded by hand: products of unequal

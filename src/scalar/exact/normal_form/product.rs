@@ -8,7 +8,7 @@
 //! product of rationals. Pairs of monomials that share a square root whose square is not an
 //! integer (a nested radical) are multiplied out through that square, as before.
 
-use super::{is_atom, square_of, Monomial, NormalForm, MAX_PRODUCT_WORK, WORK_LEFT};
+use super::{budget, is_atom, square_of, Monomial, NormalForm, WORK_LEFT};
 use crate::scalar::bignum::{Integer, Rational};
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -19,7 +19,7 @@ type Product<'a> = (&'a Rational, &'a Rational, Vec<&'a Integer>);
 impl NormalForm {
     pub(super) fn mul(&self, other: &NormalForm) -> Option<NormalForm> {
         let work = self.0.len() * other.0.len();
-        if work > MAX_PRODUCT_WORK
+        if work > budget().product_work()
             || WORK_LEFT.with(|w| w.replace(w.get().saturating_sub(work))) < work
         {
             return None;
