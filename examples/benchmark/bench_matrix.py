@@ -3,12 +3,14 @@
 matrix against single-source `exact-geodesics distance` runs, bit for bit.
 
     python3 examples/benchmark/bench_matrix.py [--model stanford_bunny] [--vertices 200]
-        [--seed 1] [--threads 2] [--repeats 1] [--check-rows 4] [--binary PATH] [--out bench-results]
+        [--seed 1] [--threads 2] [--repeats 1] [--check-rows 4] [--binary PATH]
+        [--timeout 3600] [--out bench-results]
 
 Writes OUT/matrix_runs.{json,csv} (one row per run: threads, wall seconds, user and system CPU
-seconds, peak RSS), OUT/matrix_checks.{json,csv} (the rows checked) and
-OUT/matrix_summary.{json,csv} (the speedup of the median wall times, whether the parallel
-matrix equals the serial one byte for byte). Standard library only. Exit status 1 if a checked
+seconds, peak RSS, by GNU time where it is installed: `rss_method`),
+OUT/matrix_checks.{json,csv} (the rows checked) and OUT/matrix_summary.{json,csv} (the
+speedup of the median wall times, whether the parallel matrix equals the serial one byte for
+byte). Standard library only. Exit status 1 if a checked
 row or the parallel matrix differs.
 """
 
@@ -19,20 +21,8 @@ import struct
 import subprocess
 import sys
 import tempfile
-import time
 
-from common import BIN, MODELS, ROOT, write_rows
-
-
-def run_timed(cmd):
-    """Runs `cmd` and returns (wall seconds, user CPU, system CPU, peak RSS bytes)."""
-    start = time.perf_counter()
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    _, status, usage = os.wait4(proc.pid, 0)
-    wall = time.perf_counter() - start
-    if os.waitstatus_to_exitcode(status) != 0:
-        sys.exit(f"failed: {' '.join(cmd)}")
-    return wall, usage.ru_utime, usage.ru_stime, usage.ru_maxrss * 1024
+from common import BIN, MODELS, ROOT, RSS_METHOD, RunError, run_measured, write_rows
 
 
 def read_npy(path):
@@ -66,6 +56,7 @@ def main():
     parser.add_argument("--repeats", type=int, default=1, help="runs of each, taking turns")
     parser.add_argument("--check-rows", type=int, default=4, help="rows checked against single-source runs")
     parser.add_argument("--binary", default=BIN, help="the exact-geodesics executable")
+    parser.add_argument("--timeout", type=float, default=3600, help="seconds a run may take")
     parser.add_argument("--out", default=os.path.join(ROOT, "bench-results"))
     args = parser.parse_args()
     mesh = args.model if args.model.startswith("gen:") else os.path.join(MODELS, args.model + ".obj")
@@ -78,9 +69,12 @@ def main():
                 npy = os.path.join(tmp, f"matrix{threads}.npy")
                 cmd = [args.binary, "matrix", mesh, "--random", str(args.vertices), "--seed", str(args.seed),
                        "--threads", str(threads), "--save-selection", selection, "--out", npy]
-                wall, user, system, rss = run_timed(cmd)
+                try:
+                    wall, user, system, rss = run_measured(cmd, os.devnull, args.timeout)
+                except RunError as exc:
+                    sys.exit(f"failed: {' '.join(cmd)}: {exc}")
                 runs.append({"turn": turn, "threads": threads, "wall_seconds": wall, "user_seconds": user,
-                             "system_seconds": system, "peak_rss_bytes": rss})
+                             "system_seconds": system, "peak_rss_bytes": rss, "rss_method": RSS_METHOD})
                 print(f"threads {threads}: {wall:.1f} s wall, {user:.1f} s user, {rss / 2**20:.0f} MiB",
                       file=sys.stderr)
         one = read_npy(os.path.join(tmp, "matrix1.npy"))

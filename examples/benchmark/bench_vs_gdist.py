@@ -38,15 +38,13 @@ import math
 import multiprocessing
 import os
 import platform
-import signal
 import statistics
 import subprocess
 import sys
-import tempfile
-import threading
-import time
 from datetime import datetime, timezone
 from pathlib import Path
+
+from common import RSS_METHOD, RunError, run_measured
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
@@ -99,89 +97,9 @@ class SetupError(Exception):
     """The benchmark cannot run at all (missing venv, binary, model...)."""
 
 
-class RunError(Exception):
-    """One measured run failed; recorded for its model, the benchmark goes on."""
-
-
 def log(message):
     """Print a progress line on stderr."""
     print(message, file=sys.stderr, flush=True)
-
-
-def gnu_time():
-    """The path of GNU time if it is installed (None otherwise): it reports the peak RSS of
-    the command it runs, whose ``ru_maxrss`` then starts from GNU time's small one."""
-    path = Path("/usr/bin/time")
-    try:
-        probe = subprocess.run([str(path), "--version"], capture_output=True, text=True)
-    except OSError:
-        return None
-    return str(path) if "GNU" in probe.stdout + probe.stderr else None
-
-
-GNU_TIME = gnu_time()
-# How run_measured measures peak RSS, as recorded in the results.
-RSS_METHOD = "gnu-time" if GNU_TIME else "wait4"
-
-
-def run_measured(cmd, stdout_path, timeout):
-    """Run ``cmd`` with stdout into ``stdout_path``; measure wall time and peak RSS.
-
-    The peak RSS is GNU time's ``%M`` when it is installed (``RSS_METHOD``), else the
-    child's ``ru_maxrss`` from ``os.wait4``, which includes this harness's high-water mark.
-    The child runs in its own process group, killed whole on timeout or when
-    the harness is interrupted. Returns ``(wall_seconds, peak_rss_bytes)``.
-    Raises RunError when the command cannot start, exits non-zero or outlives
-    ``timeout`` seconds.
-    """
-    timed_out = threading.Event()
-
-    def kill_group(pid):
-        try:
-            os.killpg(pid, signal.SIGKILL)
-        except ProcessLookupError:
-            pass
-
-    def on_timeout(pid):
-        timed_out.set()
-        kill_group(pid)
-
-    with open(stdout_path, "wb") as out, tempfile.TemporaryFile() as err, \
-            tempfile.NamedTemporaryFile(mode="r", encoding="ascii") as rss:
-        if GNU_TIME:
-            cmd = [GNU_TIME, "-f", "%M", "-o", rss.name, *cmd]
-        start = time.perf_counter()
-        try:
-            proc = subprocess.Popen(
-                cmd, stdin=subprocess.DEVNULL, stdout=out, stderr=err, start_new_session=True
-            )
-        except OSError as exc:
-            raise RunError(f"cannot start {cmd[0]}: {exc}") from exc
-        timer = threading.Timer(timeout, on_timeout, args=(proc.pid,))
-        timer.start()
-        try:
-            _, status, usage = os.wait4(proc.pid, 0)
-        except BaseException:
-            kill_group(proc.pid)
-            proc.wait()
-            raise
-        finally:
-            timer.cancel()
-        wall = time.perf_counter() - start
-        proc.returncode = os.waitstatus_to_exitcode(status)
-        err.seek(0)
-        stderr = err.read().decode("utf-8", errors="replace").strip()
-        reported = rss.read().strip()
-    if timed_out.is_set():
-        raise RunError(f"timed out after {timeout:g} s")
-    if proc.returncode != 0:
-        tail = "".join(f"\n    {line}" for line in stderr.splitlines()[-5:])
-        raise RunError(f"exited with status {proc.returncode}{tail}")
-    if not GNU_TIME:
-        return wall, usage.ru_maxrss if sys.platform == "darwin" else usage.ru_maxrss * 1024
-    if not reported.isdigit():
-        raise RunError(f"GNU time reported no peak RSS: {reported!r}")
-    return wall, int(reported) * 1024
 
 
 def read_distances_text(path):
@@ -272,7 +190,7 @@ def run_gdist(mesh, args, raw_dir, name):
     distances_path = raw_dir / f"{name}.gdist.txt"
     cmd = [str(args.venv_python), str(WORKER), str(mesh), "--source", str(args.source),
            "--distances", str(distances_path)]
-    wall, _ = run_measured(cmd, report_path, args.timeout)
+    wall = run_measured(cmd, report_path, args.timeout).wall_seconds
     report = json.loads(report_path.read_text(encoding="utf-8"))
     report["process_wall_seconds"] = wall
     return report, distances_path
@@ -282,8 +200,8 @@ def run_ours_distance(mesh, args, raw_dir, name):
     """One ``distance`` process: its wall time, peak RSS and the CSV it wrote."""
     csv_path = raw_dir / f"{name}.ours.csv"
     cmd = [str(args.binary), "distance", str(mesh), "--source", f"v:{args.source}", "--format", "csv"]
-    wall, peak = run_measured(cmd, csv_path, args.timeout)
-    return wall, peak, csv_path
+    run = run_measured(cmd, csv_path, args.timeout)
+    return run.wall_seconds, run.peak_rss_bytes, csv_path
 
 
 def in_fresh_process(function, *args):
@@ -356,7 +274,8 @@ def benchmark_model(name, mesh, args, raw_dir):
     try:
         stats_path = raw_dir / f"{name}.ours-stats.json"
         cmd = [str(args.binary), "stats", str(mesh), "--source", f"v:{args.source}"]
-        wall, peak = run_measured(cmd, stats_path, args.timeout)
+        run = run_measured(cmd, stats_path, args.timeout)
+        wall, peak = run.wall_seconds, run.peak_rss_bytes
         stats = parse_stats(stats_path)
         result.update(
             ours_propagation_seconds=stats["propagation_seconds"],
