@@ -87,8 +87,15 @@ pub(crate) struct Memo {
 /// abandoned: rational arithmetic on them costs more than the separation bound would.
 const MAX_COEFFICIENT_BITS: u64 = 16384;
 
+/// Term-by-term multiplications the last resorts of one run (one tower, [`new_tower`]) may
+/// spend together: a mesh with many zeros that no budget proves pays for twenty of them at
+/// most, then keeps to the cheap budget.
+const LAST_RESORT_WORK_PER_RUN: usize = 100_000_000;
+
 thread_local! {
     static WORK_LEFT: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+    static LAST_RESORT_WORK_LEFT: std::cell::Cell<usize> =
+        const { std::cell::Cell::new(LAST_RESORT_WORK_PER_RUN) };
     static BUDGET: std::cell::Cell<Budget> = const { std::cell::Cell::new(Budget::Cheap) };
     /// This thread's tower: a propagation starts a new one ([`new_tower`]), so that its symbols
     /// neither pile up from run to run nor are shared (and locked) between threads.
@@ -156,6 +163,7 @@ impl Tower {
 /// computed again when asked for.
 pub(crate) fn new_tower() {
     TOWER.with(|t| *t.borrow_mut() = Tower::new());
+    LAST_RESORT_WORK_LEFT.with(|w| w.set(LAST_RESORT_WORK_PER_RUN));
 }
 
 fn tower_id() -> u64 {
@@ -659,11 +667,17 @@ pub(crate) fn zero_by_elimination(node: &Arc<Node>, thorough: bool) -> bool {
     last_resort(|| eliminated(&cheap)) || last_resort(|| eliminated(&over_atoms(node)))
 }
 
-/// `work` with the budget of a last resort ([`Budget::LastResort`]).
+/// `work` with the budget of a last resort ([`Budget::LastResort`]), its multiplications
+/// taken from what the run's last resorts have left ([`LAST_RESORT_WORK_PER_RUN`]).
 fn last_resort<T>(work: impl FnOnce() -> T) -> T {
+    let run_left = LAST_RESORT_WORK_LEFT.with(|w| w.get());
+    let allowed = Budget::LastResort.work_per_test().min(run_left);
     BUDGET.with(|b| b.set(Budget::LastResort));
-    WORK_LEFT.with(|w| w.set(Budget::LastResort.work_per_test()));
+    WORK_LEFT.with(|w| w.set(allowed));
     let done = work();
+    // Saturating: a zero test nested in the work (a radicand's sign) resets `WORK_LEFT`.
+    let spent = allowed.saturating_sub(WORK_LEFT.with(|w| w.get()));
+    LAST_RESORT_WORK_LEFT.with(|w| w.set(run_left - spent));
     BUDGET.with(|b| b.set(Budget::Cheap));
     done
 }
