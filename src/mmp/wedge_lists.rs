@@ -3,8 +3,9 @@
 //! sorted along the edge and disjoint. A list is one piece of memory, so that placing a new
 //! wedge reads its edge's wedges and nothing else (on a shared arena, every step of that search
 //! was a cache miss). A list is a [`ThinVec`]: one pointer per edge, its length and capacity
-//! kept with its wedges (most edges have no wedge at any time, and a `Vec` costs three words). A wedge arriving on an edge is cut into pieces with the wedges there by
-//! eq. (2) ([`intersect`](super::intersect)), and the list is rebuilt from the pieces.
+//! kept with its wedges (most edges have no wedge at any time, and a `Vec` costs three words).
+//! A wedge arriving on an edge is cut into pieces with the wedges there by eq. (2)
+//! ([`intersect`](super::intersect)), and the list is rebuilt from the pieces.
 
 use super::edge_wedges::EdgeWedges;
 use super::intersect::{cut_into_pieces, Owner, Piece};

@@ -3,7 +3,8 @@ octahedron, each face split linearly into 16 (`subdivide(2)`), cleaned, their fl
 coordinates written exactly (subdivided_icosahedron.obj, subdivided_octahedron.obj: 320 and
 128 faces); and the octahedron split into 64 (`subdivide(3)`, 512 faces) with its coordinates
 written to 8 decimals (subdivided_octahedron_512.obj), which leaves the big faces only nearly
-flat; likewise the icosahedron split into 16 (subdivided_icosahedron_8_decimals.obj). The coordinates keep the mirror symmetries in the coordinate planes. Needs pyvista."""
+flat; likewise the icosahedron split into 16 (subdivided_icosahedron_8_decimals.obj). The
+coordinates keep the mirror symmetries in the coordinate planes. Needs pyvista."""
 import pyvista as pv
 
 
