@@ -317,7 +317,9 @@ impl<S: Scalar> CongruentPaths<S> {
     /// A strip's description from `from` through `chain` (at least two faces) to `to`: the
     /// classes of the first face's sides, then of each next face's two new sides and which
     /// shared corner it keeps; `flip` names the first shared side's corners the other way
-    /// round (the strip's mirror image).
+    /// round (the strip's mirror image). Faces that turn about one corner in a row (each
+    /// keeps the corner the one before kept) are described as a [`Turn`], by their shapes in
+    /// any order: the strip goes on from the last of them however they are ordered.
     fn strip(
         &self,
         mesh: &TriMesh,
@@ -338,24 +340,95 @@ impl<S: Scalar> CongruentPaths<S> {
         }
         let class = |x, y| self.class(mesh, x, y);
         let mut description = vec![class(from, a)?, class(from, b)?, class(a, b)?];
+        let mut turn = Turn::default();
         for (i, &f) in chain.iter().enumerate().skip(1) {
             let apex = *mesh.face(f).iter().find(|&&c| c != a && c != b)?;
-            description.extend([class(a, apex)?, class(b, apex)?]);
+            let sides = [class(a, apex)?, class(b, apex)?];
             if i + 1 == chain.len() {
+                turn.describe(&mut description);
+                description.extend(sides);
                 return (apex == to).then_some(description);
             }
             let next = shared(f, chain[i + 1])?;
-            if next.contains(&a) && next.contains(&apex) {
+            let entry = class(a, b)?;
+            let kept = if next.contains(&a) && next.contains(&apex) {
                 b = apex;
-                description.push(0);
+                0
             } else if next.contains(&apex) && next.contains(&b) {
                 a = apex;
-                description.push(1);
+                1
             } else {
                 return None;
-            }
+            };
+            turn.push(&mut description, kept, (entry, sides));
         }
         None
+    }
+}
+
+/// Faces of a strip in a row that turn about one corner, the *pivot* (each keeps the corner of
+/// the shared side the one before kept). Laid out in the plane, the last side of the row is
+/// the pivot's side to the last apex, turned from the row's first side by the sum of the
+/// faces' angles at the pivot: it is fixed by that side's length and the faces' shapes, in
+/// any order and each either way round (a face's angle at the pivot is a function of its
+/// three sides, the two at the pivot alike). The pivot's fan on a mesh with a symmetry broken
+/// inside the fan alone (a pole's ring of vertices, one of them off its mirror image by a
+/// rounding) gives the same strip read through its mirror image.
+#[derive(Default)]
+struct Turn {
+    /// Which corner of the shared side the faces keep (0: the first, 1: the second).
+    kept: u32,
+    /// Each face's sides at the pivot (the lesser first) and its side opposite the pivot.
+    faces: Vec<[u32; 3]>,
+    /// The side from the pivot to the last face's apex.
+    last: u32,
+}
+
+/// Marks a [`Turn`] of more than one face in a strip's description: its faces' count follows.
+const TURN: u32 = u32::MAX - 1;
+
+impl Turn {
+    /// Adds the face entered over a side of class `entry`, with new sides `sides` (from the
+    /// side's first and second corner to its apex), which keeps corner `kept` of that side;
+    /// a face that keeps the other corner starts a new turn, the last one described first.
+    fn push(&mut self, description: &mut Vec<u32>, kept: u32, (entry, sides): (u32, [u32; 2])) {
+        if !self.faces.is_empty() && kept != self.kept {
+            self.describe(description);
+        }
+        let (at_pivot, opposite) = if kept == 0 {
+            (sides[0], sides[1])
+        } else {
+            (sides[1], sides[0])
+        };
+        self.kept = kept;
+        self.faces
+            .push([entry.min(at_pivot), entry.max(at_pivot), opposite]);
+        self.last = at_pivot;
+    }
+
+    /// Appends the turn to `description` and empties it: a single face as it is met (its new
+    /// sides, the corner kept), more as [`TURN`], their count, the corner kept, their shapes
+    /// sorted and the last side.
+    fn describe(&mut self, description: &mut Vec<u32>) {
+        match self.faces[..] {
+            [] => {}
+            [[_, _, opposite]] => {
+                let sides = if self.kept == 0 {
+                    [self.last, opposite]
+                } else {
+                    [opposite, self.last]
+                };
+                description.extend(sides);
+                description.push(self.kept);
+            }
+            _ => {
+                self.faces.sort_unstable();
+                description.extend([TURN, self.faces.len() as u32, self.kept]);
+                description.extend(self.faces.iter().flatten());
+                description.push(self.last);
+            }
+        }
+        self.faces.clear();
     }
 }
 
@@ -408,6 +481,60 @@ mod tests {
             .all(|(forwards, backwards)| forwards == backwards));
         let distinct: HashSet<&Vec<u32>> = keys.iter().map(|(k, _)| k).collect();
         assert!(distinct.len() <= 3, "{} shapes", distinct.len());
+    }
+
+    /// A strip that turns about a vertex w across two faces, from p's face to r3's: pieces of
+    /// one flat mesh, each its own copy of p, w, r0, r2, r3 (integer coordinates, so that
+    /// equal squared lengths are exactly equal), with the middle corner r1 of its own.
+    fn turning_piece(r1: [f64; 2], r2: [f64; 2], r3: [f64; 2], dx: f64) -> Vec<[f64; 3]> {
+        let corners = [[2.0, -3.0], [0.0, 0.0], [5.0, 0.0], r1, r2, r3];
+        corners.iter().map(|&[x, y]| [x + dx, y, 0.0]).collect()
+    }
+
+    #[test]
+    fn faces_turning_about_a_vertex_in_another_order_have_one_key() {
+        // A turns from w r0 to w r2 across a face of sides^2 (25, 10 | 5) and one of
+        // (10, 25 | 25); B across the same two shapes the other way round (the fans are
+        // mirror images, the pieces are not: p's face and r3's differ); C turns further.
+        let pieces = [
+            turning_piece([3.0, 1.0], [0.0, 5.0], [-4.0, 1.0], 0.0),
+            turning_piece([1.0, 3.0], [0.0, 5.0], [-4.0, 1.0], 100.0),
+            turning_piece([3.0, 1.0], [-3.0, 4.0], [-5.0, 0.0], 200.0),
+        ];
+        let faces: Vec<[u32; 3]> = (0..3)
+            .flat_map(|k| {
+                [[0, 2, 1], [1, 2, 3], [1, 3, 4], [1, 4, 5]].map(|f| f.map(|c| c + 6 * k))
+            })
+            .collect();
+        let positions: Vec<[f64; 3]> = pieces.concat();
+        let mesh = TriMesh::new(positions.clone(), faces).expect("a mesh");
+        let table = CongruentPaths::<f64>::new(&mesh, &[SurfacePoint::Vertex(VertexId(0))])
+            .expect("a mesh whose chains fix their strips");
+        let path = |k: u32, backwards: bool| {
+            let (p, r3) = (VertexId(6 * k), VertexId(6 * k + 5));
+            let faces = (0..4).map(|f| FaceId(4 * k + f));
+            let key = if backwards {
+                faces
+                    .rev()
+                    .fold(Path::at_source(r3), |path, f| path.across(f))
+                    .to(p)
+            } else {
+                faces
+                    .fold(Path::at_source(p), |path, f| path.across(f))
+                    .to(r3)
+            };
+            table.key(&mesh, &key).expect("a described strip")
+        };
+        // The independent fact the keys must follow: in the plane, p to r3 is a straight line.
+        let length = |k: usize| {
+            let [p, r3] = [positions[6 * k], positions[6 * k + 5]];
+            ((p[0] - r3[0]).powi(2) + (p[1] - r3[1]).powi(2)).sqrt()
+        };
+        assert_eq!(length(0), length(1));
+        assert_ne!(length(0), length(2));
+        assert_eq!(path(0, false), path(1, false));
+        assert_eq!(path(0, false), path(1, true));
+        assert_ne!(path(0, false), path(2, false));
     }
 
     #[test]
