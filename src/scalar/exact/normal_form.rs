@@ -1014,6 +1014,33 @@ mod tests {
         assert!(!zero_by_elimination(&zero_times_a_root(tiny).0, true));
     }
 
+    /// `(1 + sqrt 2)(1 + sqrt 3) ... (1 + sqrt 23)` over the first nine primes, multiplied in
+    /// one order and in the other, less one another: zero, with a normal form of 512 terms
+    /// (past the cheap budget's 256), in a new tower.
+    fn binomials_multiplied_two_ways() -> Real {
+        new_tower();
+        let primes = [2, 3, 5, 7, 11, 13, 17, 19, 23];
+        let factor = |p: &i64| Real::from_integer(1) + &root(*p);
+        let product = |x: Real, p: &i64| x * &factor(p);
+        let forwards = primes.iter().fold(Real::from_integer(1), product);
+        let backwards = primes.iter().rev().fold(Real::from_integer(1), product);
+        forwards - &backwards
+    }
+
+    /// The last resorts of one run share a reserve: spent, a zero that only a last resort
+    /// proves is left unproved; a new run (a new tower) has the whole reserve again.
+    #[test]
+    fn the_last_resorts_of_a_run_stop_when_its_reserve_is_spent() {
+        let zero = binomials_multiplied_two_ways();
+        assert!(normal_form(&zero.0).is_none());
+        LAST_RESORT_WORK_LEFT.with(|w| w.set(0));
+        assert!(!zero_by_elimination(&zero.0, true));
+        let zero = binomials_multiplied_two_ways();
+        assert!(zero_by_elimination(&zero.0, true));
+        let left = LAST_RESORT_WORK_LEFT.with(|w| w.get());
+        assert!(left < LAST_RESORT_WORK_PER_RUN && left > 0);
+    }
+
     /// `(sqrt 2 / 2 + sqrt 3 / 3 + 1 / 5)^2`, expanded by hand: products of unequal
     /// denominators fall on the rational term (`1/2 + 1/3 + 1/25 = 131/150`), one product
     /// on each other monomial.
