@@ -386,6 +386,19 @@ fn paths_turning_about_a_pole_in_another_order_tie_by_structure() {
     assert_certified_and_bounded("superquadric.obj", &[0, 121]);
 }
 
+/// pyvista's Bour's minimal surface, 12 by 12 (`tests/data/bour_surface.py`, float32
+/// coordinates): its vertices but those of one seam come in mirror pairs across the plane
+/// y = 0. From v0 (its centre, where the surface winds twice round), v1 and v60, wedges reach
+/// the edges between mirror pairs with their ranges mirrored about their feet: one distance at
+/// both ends, by the symmetry. The engine asked which end's distance is the larger, for a
+/// bound; where that order is not proved it now asks the bound at both ends (`intersect.rs`,
+/// `end_values`). The previous build left 11 decisions uncertified from each (43 from a
+/// sampling of 20 by 20).
+#[test]
+fn ends_of_a_range_mirrored_about_its_foot_need_no_order() {
+    assert_certified_and_bounded("bour_surface.obj", &[0, 1, 60]);
+}
+
 /// pyvista's icosahedron with each face split linearly into 16 (`tests/data/
 /// subdivided_solids.py`, float32 coordinates): some of its big faces are exactly flat
 /// regions, where wedges of one image on both sides of a vertex's shadow are joined. The

@@ -91,15 +91,49 @@ fn push_cut_piece<S: Scalar>(
     pieces.push(piece);
 }
 
-/// The smallest value of a distance function on `[lo, hi]` (it is convex, so the foot of the
-/// pseudo-source if inside, else the nearer end), or `sigma + y` below it where the backend
-/// leaves open on which side of an end the foot lies ([`Scalar::foot_within`]): the callers
-/// compare it with a largest value for a bound, which a lower one keeps.
-fn min_on<S: Scalar>(d: &SourceDistance<S>, lo: &S, hi: &S, at_lo: &S, at_hi: &S) -> S {
-    if S::foot_within(&d.x, lo, hi, false) {
-        d.y.clone() + &d.sigma
+/// The lower (or the higher) of a wedge's distances at the two ends of a range, as the bounds
+/// below ask for it: one end where the backend proves their order, else both, not asked which
+/// (the ends of a range mirrored about the foot tie by a symmetry of the mesh, and no normal
+/// form may prove it). A bound that holds at the lower end (at least a value, below a value;
+/// or, at the higher end, at most a value) holds at both.
+fn end_values<'a, S: Scalar>(at_lo: &'a S, at_hi: &'a S, lower: bool) -> ([&'a S; 2], usize) {
+    let other_end = if lower {
+        Ordering::Greater
     } else {
-        S::min_of(at_lo, at_hi)
+        Ordering::Less
+    };
+    match S::proved_order(at_lo, at_hi) {
+        Some(order) if order == other_end => ([at_hi, at_hi], 1),
+        Some(_) => ([at_lo, at_lo], 1),
+        None => ([at_lo, at_hi], 2),
+    }
+}
+
+/// Where a distance function is lowest on `[lo, hi]`: it is convex, so at the foot of the
+/// pseudo-source if inside (or `sigma + y` below it where the backend leaves open on which
+/// side of an end the foot lies, [`Scalar::foot_within`]: the callers use it as a bound, which
+/// a lower one keeps), else at the lower end ([`end_values`]).
+enum Lowest<'a, S> {
+    Foot(S),
+    Ends([&'a S; 2], usize),
+}
+
+impl<'a, S: Scalar> Lowest<'a, S> {
+    fn on(d: &SourceDistance<S>, lo: &S, hi: &S, [at_lo, at_hi]: [&'a S; 2]) -> Self {
+        if S::foot_within(&d.x, lo, hi, false) {
+            Lowest::Foot(d.y.clone() + &d.sigma)
+        } else {
+            let (ends, n) = end_values(at_lo, at_hi, true);
+            Lowest::Ends(ends, n)
+        }
+    }
+
+    /// Whether `holds` holds at the lowest value (at each candidate for it).
+    fn all(&self, holds: impl Fn(&S) -> bool) -> bool {
+        match self {
+            Lowest::Foot(d) => holds(d),
+            Lowest::Ends(ends, n) => ends[..*n].iter().all(|d| holds(d)),
+        }
     }
 }
 
@@ -140,13 +174,24 @@ fn split_shared_range<S: Scalar>(
             .clone()
             .unwrap_or_else(|| [theirs.at(at), mine.at(at)])
     });
-    let their_max = S::max_of(&their_lo, &their_hi);
-    if min_on(mine, &lo, &hi, &my_lo, &my_hi).compare_distance(&their_max) != Ordering::Less {
+    // One wedge's lowest value against the other's highest end value (at each candidate for
+    // them, see `end_values`).
+    let (their_max, n) = end_values(&their_lo, &their_hi, false);
+    let my_lowest = Lowest::on(mine, &lo, &hi, [&my_lo, &my_hi]);
+    if my_lowest.all(|m| {
+        their_max[..n]
+            .iter()
+            .all(|t| m.compare_distance(t) != Ordering::Less)
+    }) {
         push_piece(pieces, [lo, hi], Owner::old(id), end_of);
         return (Eq2Case::None, false);
     }
-    let my_max = S::max_of(&my_lo, &my_hi);
-    if my_max.compare_distance(&min_on(theirs, &lo, &hi, &their_lo, &their_hi)) == Ordering::Less {
+    let (my_max, n) = end_values(&my_lo, &my_hi, false);
+    let their_lowest = Lowest::on(theirs, &lo, &hi, [&their_lo, &their_hi]);
+    if my_max[..n]
+        .iter()
+        .all(|m| their_lowest.all(|t| m.compare_distance(t) == Ordering::Less))
+    {
         push_piece(pieces, [lo, hi], Owner::NEW, end_of);
         return (Eq2Case::None, false);
     }

@@ -249,6 +249,14 @@ pub trait Scalar: Field {
         false
     }
 
+    /// The order of two values where the backend proves it, else `None` and no decision: for a
+    /// choice that the caller can make without it (by asking what it needs of both values).
+    /// Number types that always answer give their comparison.
+    #[inline(always)]
+    fn proved_order(a: &Self, b: &Self) -> Option<Ordering> {
+        Some(a.compare(b))
+    }
+
     /// Roots of eq. (2) [LZT §2] that solve eq. (1), strictly inside `(lo, hi)`, in increasing
     /// order; by Property 1 there are none, one, two or infinitely many. The roots of
     /// [`Scalar::bisector`] without the ends' values.

@@ -659,6 +659,12 @@ impl Scalar for Real {
         (0..2).all(|i| CertifiedSign::proved_sign(&(p[i].clone() - q[i])) == Some(Sign::Zero))
     }
 
+    /// By the filters, else by a certified sign of the difference (no decision without one).
+    fn proved_order(a: &Self, b: &Self) -> Option<Ordering> {
+        a.filtered_order(b)
+            .or_else(|| CertifiedSign::proved_sign(&(a.clone() - b)).map(Sign::as_ordering))
+    }
+
     /// Certified, as [`Scalar::same_distance_function`]: in a flat region the image is one
     /// expression however it crossed the region (see `mmp/flat_region.rs`).
     fn same_image(a: &SourceDistance<Self>, b: &SourceDistance<Self>, scale: &Self) -> bool {
