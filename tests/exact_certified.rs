@@ -362,7 +362,7 @@ fn vertices_on_a_crease_reached_from_both_sides_are_certified() {
     assert_certified_and_bounded("domed_prism.obj", &[120, 5]);
 }
 
-/// pyvista's parametric torus, 30 by 20 (`tests/data/parametric_torus.py`, float32
+/// pyvista's parametric torus, 30 by 20 (`tests/data/pyvista_surfaces.py`, float32
 /// coordinates). From v275, wedges have the foot of their image exactly at an end of their
 /// range, where the smallest distance they give (their key in the queue) is one value by
 /// either formula: a tie that nothing needs decided, and that no normal form proved. The
@@ -372,21 +372,21 @@ fn a_foot_at_a_range_end_is_no_decision() {
     assert_certified_and_bounded("parametric_torus.obj", &[275]);
 }
 
-/// pyvista's superquadric (`tests/data/superquadric.py`, float32 coordinates): its vertices
+/// pyvista's superquadric (`tests/data/pyvista_surfaces.py`, float32 coordinates): its vertices
 /// are symmetric under the half turn about the x axis, which swaps its poles, but for two
-/// meridians that a rounded cosine puts 2e-6 off the plane z = 0 (on the same side of it at
-/// both poles). From v0 and v121, paths over one pole tie with their half-turn images over the
-/// other: the same strips, but for the two faces at such a meridian's vertex next to the pole,
-/// which turn about the pole in the other order (mirror images), the same angle in all. Their
-/// descriptions list faces turning about one vertex in any order (`paths.rs`, `Turn`), so the
-/// two lengths are one expression. The previous build left 9 and 18 decisions uncertified
-/// (with 8 decimals: 6 and 14).
+/// meridians that a rounded cosine puts 2e-6 off the plane z = 0 (on the same side of it at both
+/// poles). From v0 and v121, paths over one pole tie with their half-turn images over the other:
+/// the same strips, but for the two faces at such a meridian's vertex next to the pole, which turn
+/// about the pole in the other order (mirror images), the same angle in all. Their descriptions
+/// list faces turning about one vertex in any order (`paths.rs`, `Turn`), so the two lengths are
+/// one expression. The previous build left 9 and 18 decisions uncertified (with 8 decimals: 6 and
+/// 14).
 #[test]
 fn paths_turning_about_a_pole_in_another_order_tie_by_structure() {
     assert_certified_and_bounded("superquadric.obj", &[0, 121]);
 }
 
-/// pyvista's Bour's minimal surface, 12 by 12 (`tests/data/bour_surface.py`, float32
+/// pyvista's Bour's minimal surface, 12 by 12 (`tests/data/pyvista_surfaces.py`, float32
 /// coordinates): its vertices but those of one seam come in mirror pairs across the plane
 /// y = 0. From v0 (its centre, where the surface winds twice round), v1 and v60, wedges reach
 /// the edges between mirror pairs with their ranges mirrored about their feet: one distance at
