@@ -455,6 +455,17 @@ fn the_last_resort_of_a_zero_may_spend_more_on_its_normal_form() {
     assert_certified_and_bounded("subdivided_icosahedron_8_decimals.obj", &[1, 81, 0]);
 }
 
+/// The tetrahedron split into 256 faces, its coordinates written to 8 decimals (`tests/data/
+/// subdivided_solids.py`). From v1, a tie is `sqrt F - sqrt G` with `F` and `G` forms of
+/// many terms over integer radicals (up to 1e95), equal in value: the elimination of
+/// square roots needs the sign of `sqrt F`, which `F`'s `f64` enclosure (cancellation of
+/// terms beyond `f64`'s range) left open. A new root's enclosure is now also its node's
+/// refined one (`normal_form.rs`). The previous build left 2 decisions uncertified.
+#[test]
+fn a_root_s_sign_is_read_from_its_refined_enclosure() {
+    assert_certified_and_bounded("subdivided_tetrahedron_8_decimals.obj", &[1]);
+}
+
 /// Open cylinders (`tests/data/open_cylinders.py`): bands of rectangular strips between vertical
 /// creases, which unroll to a rectangle as wide as the polygon's perimeter. A geodesic is a
 /// straight line in it: from section `s`, ring `r` to section `i`, ring `j`, the hypotenuse of the

@@ -128,6 +128,15 @@ impl Interval {
         }
     }
 
+    /// The common part of two enclosures of one value: an enclosure of it too.
+    #[inline(always)]
+    pub fn meet(self, o: Interval) -> Interval {
+        Interval {
+            lo: self.lo.max(o.lo),
+            hi: self.hi.min(o.hi),
+        }
+    }
+
     /// Whether the interval is `[-inf, inf]` or has lost its bounds to a NaN.
     fn checked(self) -> Interval {
         if self.lo.is_nan() || self.hi.is_nan() {

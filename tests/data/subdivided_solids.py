@@ -3,7 +3,8 @@ octahedron, each face split linearly into 16 (`subdivide(2)`), cleaned, their fl
 coordinates written exactly (subdivided_icosahedron.obj, subdivided_octahedron.obj: 320 and
 128 faces); and the octahedron split into 64 (`subdivide(3)`, 512 faces) with its coordinates
 written to 8 decimals (subdivided_octahedron_512.obj), which leaves the big faces only nearly
-flat; likewise the icosahedron split into 16 (subdivided_icosahedron_8_decimals.obj). The
+flat; likewise the icosahedron split into 16 (subdivided_icosahedron_8_decimals.obj) and
+the tetrahedron into 64 (subdivided_tetrahedron_8_decimals.obj, 256 faces). The
 coordinates keep the mirror symmetries in the coordinate planes. Needs pyvista."""
 import pyvista as pv
 
@@ -20,3 +21,4 @@ for name, solid in [("icosahedron", pv.Icosahedron()), ("octahedron", pv.Octahed
     write(f"subdivided_{name}.obj", solid.triangulate().subdivide(2).clean(), repr)
 write("subdivided_octahedron_512.obj", pv.Octahedron().triangulate().subdivide(3).clean(), lambda c: "%.8f" % c)
 write("subdivided_icosahedron_8_decimals.obj", pv.Icosahedron().triangulate().subdivide(2).clean(), lambda c: "%.8f" % c)
+write("subdivided_tetrahedron_8_decimals.obj", pv.Tetrahedron().triangulate().subdivide(3).clean(), lambda c: "%.8f" % c)

@@ -28,7 +28,7 @@
 //! of several radicals whose radicands hold other radicals, where the symbols are not
 //! independent.
 
-use super::super::bignum::{Integer, Rational};
+use super::super::bignum::{Integer, Rational, Round};
 use super::super::{Field, Interval, Sign};
 use super::node::{enclose, Node, Op};
 use std::cell::RefCell;
@@ -302,8 +302,11 @@ impl NormalForm {
         ))
     }
 
-    /// The square root of a value known to be positive.
-    fn sqrt(&self) -> Option<NormalForm> {
+    /// The square root of a value known to be positive, `root` an enclosure of it: a new
+    /// symbol's enclosure is the better of `root` and the root of the form's own, which
+    /// cancellation among large terms may leave wide (a sign that the elimination of square
+    /// roots reads off it).
+    fn sqrt(&self, root: Interval) -> Option<NormalForm> {
         if let Some(r) = self.as_rational() {
             return Some(sqrt_of_rational(&r));
         }
@@ -315,7 +318,7 @@ impl NormalForm {
         }
         let known = TOWER.with(|t| t.borrow().radicals.get(self).copied());
         let id = known.unwrap_or_else(|| {
-            let enclosure = self.enclosure().sqrt();
+            let enclosure = self.enclosure().sqrt().meet(root);
             TOWER.with(|t| {
                 let mut t = t.borrow_mut();
                 let id = t.push(Some(self.clone()), enclosure);
@@ -969,7 +972,13 @@ fn compute_with(
                 return Some(NormalForm::default());
             }
             if a.filter.lo > 0.0 || super::Real(a.clone()).positive_without_zero_test() {
-                radicand.sqrt()
+                // The node's refined enclosure (cached on it once a sign asked for it).
+                let (lo, hi) = super::refine::enclosure(node, super::FIRST_PRECISION);
+                let root = Interval {
+                    lo: lo.to_f64(Round::Down),
+                    hi: hi.to_f64(Round::Up),
+                };
+                radicand.sqrt(root.meet(node.filter))
             } else {
                 None
             }
@@ -1039,6 +1048,26 @@ mod tests {
         assert!(zero_by_elimination(&zero.0, true));
         let left = LAST_RESORT_WORK_LEFT.with(|w| w.get());
         assert!(left < LAST_RESORT_WORK_PER_RUN && left > 0);
+    }
+
+    /// `sqrt(2 + 10^-900 sqrt(10^200 + 1) sqrt(10^200 + 3) sqrt(10^200 + 7) sqrt(10^200 + 9))`:
+    /// the radicand's form is two terms, one of a coefficient below `f64`'s range times radicals
+    /// above it, so its `f64` enclosure is the whole line; the root's symbol takes the node's
+    /// refined enclosure, and its sign (which the elimination of square roots reads) is clear.
+    #[test]
+    fn a_root_whose_radicand_overflows_f64_has_a_clear_sign() {
+        new_tower();
+        let big = |k: i64| {
+            let n = Integer::from(10).pow(200) + Integer::from(k);
+            Real::from_rational(Rational::from(n)).sqrt()
+        };
+        let tiny =
+            Real::from_integer(1) / Real::from_rational(Rational::from(Integer::from(10).pow(900)));
+        let radicand = Real::from_integer(2) + &(tiny * &big(1) * &big(3) * &big(7) * &big(9));
+        let form = normal_form(&radicand.0).expect("a normal form");
+        assert_eq!(form.enclosure().sign(), None);
+        let root = normal_form(&radicand.sqrt().0).expect("a normal form");
+        assert_eq!(root.enclosure().sign(), Some(Sign::Positive));
     }
 
     /// `(sqrt 2 / 2 + sqrt 3 / 3 + 1 / 5)^2`, expanded by hand: products of unequal
