@@ -302,11 +302,11 @@ impl NormalForm {
         ))
     }
 
-    /// The square root of a value known to be positive, `root` an enclosure of it: a new
-    /// symbol's enclosure is the better of `root` and the root of the form's own, which
+    /// The square root of a value known to be positive, `root` giving an enclosure of it: a
+    /// new symbol's enclosure is the better of that and the root of the form's own, which
     /// cancellation among large terms may leave wide (a sign that the elimination of square
-    /// roots reads off it).
-    fn sqrt(&self, root: Interval) -> Option<NormalForm> {
+    /// roots reads off it). Asked only for a new symbol.
+    fn sqrt(&self, root: impl FnOnce() -> Interval) -> Option<NormalForm> {
         if let Some(r) = self.as_rational() {
             return Some(sqrt_of_rational(&r));
         }
@@ -318,7 +318,7 @@ impl NormalForm {
         }
         let known = TOWER.with(|t| t.borrow().radicals.get(self).copied());
         let id = known.unwrap_or_else(|| {
-            let enclosure = self.enclosure().sqrt().meet(root);
+            let enclosure = self.enclosure().sqrt().meet(root());
             TOWER.with(|t| {
                 let mut t = t.borrow_mut();
                 let id = t.push(Some(self.clone()), enclosure);
@@ -973,12 +973,14 @@ fn compute_with(
             }
             if a.filter.lo > 0.0 || super::Real(a.clone()).positive_without_zero_test() {
                 // The node's refined enclosure (cached on it once a sign asked for it).
-                let (lo, hi) = super::refine::enclosure(node, super::FIRST_PRECISION);
-                let root = Interval {
-                    lo: lo.to_f64(Round::Down),
-                    hi: hi.to_f64(Round::Up),
-                };
-                radicand.sqrt(root.meet(node.filter))
+                radicand.sqrt(|| {
+                    let (lo, hi) = super::refine::enclosure(node, super::FIRST_PRECISION);
+                    let root = Interval {
+                        lo: lo.to_f64(Round::Down),
+                        hi: hi.to_f64(Round::Up),
+                    };
+                    root.meet(node.filter)
+                })
             } else {
                 None
             }
