@@ -247,6 +247,12 @@ impl<S: Scalar> FlatRegions<S> {
         creases
     }
 
+    /// Whether the edge `e`, leaving region `left`, is unfolded by the one map built for its
+    /// pair of regions (it lies on the line of the pair's first edge, faces on the same sides).
+    pub(crate) fn unfolds_along_crease_line(&self, e: EdgeId, left: u32) -> bool {
+        self.creases.contains_key(&(e, left))
+    }
+
     /// The region of a face, if it has one.
     pub(crate) fn region(&self, f: FaceId) -> Option<u32> {
         self.face_region[f.index()]

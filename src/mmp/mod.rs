@@ -15,6 +15,7 @@ mod planar;
 mod propagate;
 mod provenance;
 mod query;
+mod region_runs;
 mod source;
 mod stats;
 mod stop;

@@ -291,7 +291,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let paths = keeps_values::<S>()
             .then(|| CongruentPaths::new(mesh, &sources))
             .flatten();
-        let offered = paths.as_ref().map(|_| OfferedWedges::default());
+        let offered = paths
+            .as_ref()
+            .map(|_| OfferedWedges::new(mesh, unfolding.flat_regions()));
         Engine {
             mesh,
             unfolding,

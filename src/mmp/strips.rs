@@ -16,11 +16,15 @@
 //!
 //! [`OfferedWedges`] describes strips and range ends incrementally (interned, so that a wedge
 //! keeps a few numbers, not a list of faces), in two readings: the first face's far corners
-//! named either way round, the strip and its mirror image. Kept only by number types that keep
-//! values, on the meshes where [`CongruentPaths`] describes strips (a chain of faces fixes its
-//! strip there).
+//! named either way round, the strip and its mirror image. Through a flat region a strip is
+//! described by its run there, not by the faces it crosses (see `region_runs.rs`), and a range
+//! end carried along the run by the point its ray came through where it was last named. Kept
+//! only by number types that keep values, on the meshes where [`CongruentPaths`] describes
+//! strips (a chain of faces fixes its strip there).
 
+use super::flat_region::FlatRegions;
 use super::paths::{CongruentPaths, Path};
+use super::region_runs::{Entry, RegionRuns, Run, RunKey};
 use crate::mesh::{EdgeId, FaceId, SourceId, TriMesh, VertexId};
 use crate::scalar::Scalar;
 use std::collections::{HashMap, HashSet};
@@ -34,15 +38,27 @@ pub(crate) struct Strip {
     a: [VertexId; 2],
     b: [VertexId; 2],
     ends: [Option<[u32; 2]>; 2],
+    /// The run through a flat region the strip is in, if it is (see `region_runs.rs`).
+    run: Option<Run>,
+    /// For each range end the strips know, in each reading: the strip's id on the edge where
+    /// the end was last named other than by a ray carried along a run, and its key there. A
+    /// ray carried along a run is named from that point, not from the edges crossed since.
+    bases: [Option<[(u32, u32); 2]>; 2],
 }
 
 impl Strip {
+    /// Range end `i`'s key in each reading, with the strip's ids: where the end is named now.
+    fn based(&self, i: usize) -> Option<[(u32, u32); 2]> {
+        self.ends[i].map(|keys| [0, 1].map(|r| (self.ids[r], keys[r])))
+    }
+
     /// The same strip with the range ends that `keep` says are still the wedge's own; a
     /// trimmed end (another wedge's end, or a crossing not yet named) is unknown.
     pub(crate) fn trimmed(mut self, keep: [bool; 2]) -> Strip {
-        for (end, keep) in self.ends.iter_mut().zip(keep) {
+        for (i, keep) in keep.into_iter().enumerate() {
             if !keep {
-                *end = None;
+                self.ends[i] = None;
+                self.bases[i] = None;
             }
         }
         self
@@ -59,6 +75,7 @@ impl Strip {
             let reading = |r: usize| (0..2).find(|&q| other.a[q] == self.a[r]);
             Some([keys[reading(0)?], keys[reading(1)?]])
         });
+        self.bases[i] = self.based(i);
         self
     }
 
@@ -80,6 +97,7 @@ impl Strip {
             *self
         };
         joined.ends = [None; 2];
+        joined.bases = [None; 2];
         joined.ending_at(0, self, 0).ending_at(1, next, 1)
     }
 
@@ -122,6 +140,7 @@ impl Strip {
     /// The same strip with its range ends swapped (the wedge laid out the other way).
     pub(crate) fn swapped(mut self) -> Strip {
         self.ends.swap(0, 1);
+        self.bases.swap(0, 1);
         self
     }
 }
@@ -155,6 +174,9 @@ enum EndKey {
         high: u32,
         low_beyond: bool,
     },
+    /// The ray from the image through the point `point` of the edge where the strip was
+    /// `base`, carried along a run to the edge of strip `strip` (see `region_runs.rs`).
+    Through { strip: u32, base: u32, point: u32 },
 }
 
 /// The strips met in one run, and the wedges offered through them.
@@ -163,6 +185,11 @@ pub(crate) struct OfferedWedges {
     /// Interned descriptions: a strip's id from the id of the strip one face shorter (or
     /// [`FIRST_FACE`]) and the next face's description.
     strips: HashMap<(u32, [u32; 4]), u32>,
+    /// Interned descriptions in a run through a flat region: a strip's id from its run's
+    /// prefix and its edge's description against the run's anchor (see `region_runs.rs`).
+    runs: HashMap<(u32, RunKey), u32>,
+    /// The flat regions, where the mesh has some.
+    regions: Option<RegionRuns>,
     /// Interned keys of the paths to pseudo-sources (see `paths.rs`).
     paths: HashMap<Vec<u32>, u32>,
     /// Interned keys of range ends.
@@ -180,9 +207,74 @@ const FIRST_FACE: u32 = u32::MAX;
 const ALONG: u32 = u32::MAX - 1;
 
 impl OfferedWedges {
+    /// The table for a run on `mesh`, with the mesh's flat regions where it has some.
+    pub(crate) fn new<S: Scalar>(mesh: &TriMesh, regions: Option<&FlatRegions<S>>) -> Self {
+        OfferedWedges {
+            regions: regions.map(|r| RegionRuns::new(mesh, r)),
+            ..OfferedWedges::default()
+        }
+    }
+
+    /// The next strip id: ids of both tables are counted together, so they never meet.
+    fn next_id(&self) -> u32 {
+        (self.strips.len() + self.runs.len()) as u32
+    }
+
     fn intern(&mut self, before: u32, description: [u32; 4]) -> u32 {
-        let next = self.strips.len() as u32;
+        let next = self.next_id();
         *self.strips.entry((before, description)).or_insert(next)
+    }
+
+    fn intern_run(&mut self, prefix: u32, key: RunKey) -> u32 {
+        let next = self.next_id();
+        *self.runs.entry((prefix, key)).or_insert(next)
+    }
+
+    /// The id of edge `edge` in `run`'s reading `r`.
+    fn run_id(&mut self, mesh: &TriMesh, run: &Run, r: usize, edge: [VertexId; 2]) -> Option<u32> {
+        let key = self.regions.as_mut()?.key(mesh, run.anchor[r], edge)?;
+        Some(self.intern_run(run.prefix[r], key))
+    }
+
+    /// The run a strip is in after crossing into face `f` (of far corner `apex`) across its
+    /// edge, where `f` lies in a flat region: the strip's run where `f` continues it; one
+    /// anchored on a crease line, described from the run left, where the strip crosses one;
+    /// else one anchored on the edge it came in by.
+    fn run_into(
+        &mut self,
+        mesh: &TriMesh,
+        strip: &Strip,
+        f: FaceId,
+        apex: VertexId,
+    ) -> Option<Option<Run>> {
+        let names = [0, 1].map(|r| [strip.a[r], strip.b[r]]);
+        let Some(entry) = self
+            .regions
+            .as_ref()
+            .and_then(|r| r.entry(strip.run.as_ref(), f, names))
+        else {
+            return Some(None);
+        };
+        Some(Some(match entry {
+            Entry::Continues(run) => run,
+            Entry::Crease(left, region, anchor) => {
+                let mut prefix = [0; 2];
+                for r in 0..2 {
+                    let [u, w, _] = anchor[r];
+                    prefix[r] = self.run_id(mesh, &left, r, [u, w])?;
+                }
+                Run {
+                    region,
+                    anchor,
+                    prefix,
+                }
+            }
+            Entry::Fresh(region) => Run {
+                region,
+                anchor: names.map(|[a, b]| [a, b, apex]),
+                prefix: strip.ids,
+            },
+        }))
     }
 
     fn intern_end(&mut self, key: EndKey) -> u32 {
@@ -203,16 +295,31 @@ impl OfferedWedges {
         let corners = mesh.face(f);
         let at = corners.iter().position(|&c| c == p)?;
         let (next, previous) = (corners[(at + 1) % 3], corners[(at + 2) % 3]);
-        let mut read = |a: VertexId, b: VertexId| -> Option<u32> {
-            let sides = [
-                paths.class(mesh, p, a)?,
-                paths.class(mesh, p, b)?,
-                paths.class(mesh, a, b)?,
-            ];
-            Some(self.intern(FIRST_FACE, [path, sides[0], sides[1], sides[2]]))
+        let region = self.regions.as_ref().and_then(|r| r.region(f));
+        let Some(region) = region else {
+            let mut read = |a: VertexId, b: VertexId| -> Option<u32> {
+                let sides = [
+                    paths.class(mesh, p, a)?,
+                    paths.class(mesh, p, b)?,
+                    paths.class(mesh, a, b)?,
+                ];
+                Some(self.intern(FIRST_FACE, [path, sides[0], sides[1], sides[2]]))
+            };
+            let ids = [read(next, previous)?, read(previous, next)?];
+            return Some(self.spanning(ids, [next, previous], first, None));
         };
-        let ids = [read(next, previous)?, read(previous, next)?];
-        Some(self.spanning(ids, [next, previous], first))
+        // The pseudo-source lies in the region: the run's anchor.
+        let prefix = self.intern(FIRST_FACE, [path, u32::MAX, u32::MAX, u32::MAX]);
+        let run = Run {
+            region,
+            anchor: [[p; 3]; 2],
+            prefix: [prefix; 2],
+        };
+        let ids = [
+            self.run_id(mesh, &run, 0, [next, previous])?,
+            self.run_id(mesh, &run, 1, [previous, next])?,
+        ];
+        Some(self.spanning(ids, [next, previous], first, Some(run)))
     }
 
     /// The strip of the wedge that pseudo-source `p`, reached along `path`, sends along its
@@ -230,20 +337,29 @@ impl OfferedWedges {
         let side = paths.class(mesh, p, other)?;
         // Read from `p`, the image is at `a`; from the other end, at `b`.
         let ids = [0, 1].map(|at_b| self.intern(ALONG, [path, side, at_b, 0]));
-        Some(self.spanning(ids, [p, other], first))
+        Some(self.spanning(ids, [p, other], first, None))
     }
 
     /// The strip of ids `ids` read from `a` and from `b`, over its whole edge (whose frame runs
-    /// from `first`): the range's ends are the edge's.
-    fn spanning(&mut self, ids: [u32; 2], [a, b]: [VertexId; 2], first: VertexId) -> Strip {
+    /// from `first`), in `run`: the range's ends are the edge's.
+    fn spanning(
+        &mut self,
+        ids: [u32; 2],
+        [a, b]: [VertexId; 2],
+        first: VertexId,
+        run: Option<Run>,
+    ) -> Strip {
         let mut strip = Strip {
             ids,
             a: [a, b],
             b: [b, a],
             ends: [None; 2],
+            run,
+            bases: [None; 2],
         };
         let last = if first == a { b } else { a };
         strip.ends = [first, last].map(|v| Some(self.corner(&strip, v)));
+        strip.bases = [0, 1].map(|i| strip.based(i));
         strip
     }
 
@@ -280,11 +396,13 @@ impl OfferedWedges {
         (face, to): (FaceId, EdgeId),
         through: [Through; 2],
     ) -> Option<Strip> {
+        let (a, b) = (strip.a[0], strip.b[0]);
+        let apex = *mesh.face(face).iter().find(|&&c| c != a && c != b)?;
+        let run = self.run_into(mesh, strip, face, apex)?;
         let mut next = *strip;
+        next.run = run;
         for reading in 0..2 {
             let (a, b) = (strip.a[reading], strip.b[reading]);
-            let apex = *mesh.face(face).iter().find(|&&c| c != a && c != b)?;
-            let sides = [paths.class(mesh, a, apex)?, paths.class(mesh, b, apex)?];
             let ends = mesh.edge(to).vertices;
             let (exit, labels) = if ends.contains(&a) && ends.contains(&apex) {
                 (0, (a, apex))
@@ -293,20 +411,48 @@ impl OfferedWedges {
             } else {
                 return None;
             };
-            next.ids[reading] = self.intern(strip.ids[reading], [sides[0], sides[1], exit, 0]);
+            next.ids[reading] = match &run {
+                Some(run) => self.run_id(mesh, run, reading, [labels.0, labels.1])?,
+                None => {
+                    let sides = [paths.class(mesh, a, apex)?, paths.class(mesh, b, apex)?];
+                    self.intern(strip.ids[reading], [sides[0], sides[1], exit, 0])
+                }
+            };
             (next.a[reading], next.b[reading]) = labels;
         }
-        next.ends = through.map(|t| match t {
-            Through::Corner(v) => Some(self.corner(&next, v)),
-            Through::Ray(i) => strip.ends[i].map(|origin| {
-                [0, 1].map(|r| {
-                    self.intern_end(EndKey::Carried {
-                        strip: next.ids[r],
-                        origin: origin[r],
-                    })
-                })
-            }),
-        });
+        for (i, t) in through.into_iter().enumerate() {
+            (next.ends[i], next.bases[i]) = match (t, &run) {
+                (Through::Corner(v), _) => (Some(self.corner(&next, v)), None),
+                // Along a run, the ray is named from where its end was last named.
+                (Through::Ray(j), Some(_)) => {
+                    let base = strip.bases[j];
+                    let keys = base.map(|base| {
+                        [0, 1].map(|r| {
+                            self.intern_end(EndKey::Through {
+                                strip: next.ids[r],
+                                base: base[r].0,
+                                point: base[r].1,
+                            })
+                        })
+                    });
+                    (keys, base)
+                }
+                (Through::Ray(j), None) => (
+                    strip.ends[j].map(|origin| {
+                        [0, 1].map(|r| {
+                            self.intern_end(EndKey::Carried {
+                                strip: next.ids[r],
+                                origin: origin[r],
+                            })
+                        })
+                    }),
+                    None,
+                ),
+            };
+            if next.bases[i].is_none() {
+                next.bases[i] = next.based(i);
+            }
+        }
         Some(next)
     }
 
@@ -344,6 +490,7 @@ impl OfferedWedges {
             [Some(k0), Some(k1)] => Some([k0, k1]),
             _ => None,
         };
+        next.bases[i] = next.based(i);
         next
     }
 
@@ -365,5 +512,127 @@ impl OfferedWedges {
         let described = [0, 1].map(|r| ([strip.ids[r], b0[r], b1[r]], first == strip.a[r]));
         let (key, a_first) = described[0].min(described[1]);
         !self.offered.insert((source, p, edge, key, a_first))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mmp::source::SurfacePoint;
+
+    /// A fan of faces about `v` (the origin, lifted by `lift`; its other corners are `fan`, in
+    /// counterclockwise order) and, beyond its corners on `x = -1`, faces with the corner `p`
+    /// in the plane `z = -(x + 1)` (`beyond`).
+    fn fan(lift: f64, fan: &[[f64; 2]], beyond: &[[u32; 3]]) -> TriMesh {
+        let mut positions = vec![[0.0, 0.0, lift], [-2.0, 0.0, 1.0], [-2.0, -2.0, 1.0]];
+        positions.extend(fan.iter().map(|&[x, y]| [x, y, 0.0]));
+        let n = fan.len() as u32;
+        let mut faces: Vec<[u32; 3]> = (0..n).map(|k| [0, 3 + k, 3 + (k + 1) % n]).collect();
+        faces.extend(beyond);
+        TriMesh::new(positions, faces).expect("a mesh")
+    }
+
+    /// The strips from `p` (v1) across face `start` (whose far edge's frame runs from
+    /// `frame`), then through the fan's faces of `route` (each entered across the edge it
+    /// shares with the one before) out across `exit`, their ends carried along the rays:
+    /// described in one table.
+    fn through_fan(mesh: &TriMesh, routes: [(u32, u32, &[u32]); 2], exit: [u32; 2]) -> [Strip; 2] {
+        let regions = FlatRegions::<f64>::new(
+            mesh,
+            &mesh
+                .positions()
+                .iter()
+                .map(|p| p.to_array())
+                .collect::<Vec<_>>(),
+            vec![false; mesh.edge_count()],
+        );
+        let p = VertexId(1);
+        let paths = CongruentPaths::<f64>::new(mesh, &[SurfacePoint::Vertex(p)]).expect("paths");
+        let mut offered = OfferedWedges::new(mesh, Some(&regions));
+        let exit = mesh
+            .edge_between(VertexId(exit[0]), VertexId(exit[1]))
+            .expect("an edge");
+        routes.map(|(start, frame, route)| {
+            let from = (p, &Path::at_source(p));
+            let mut strip = offered
+                .first(&paths, mesh, from, (FaceId(start), VertexId(frame)))
+                .expect("a strip");
+            for (k, &f) in route.iter().enumerate() {
+                let to = match route.get(k + 1) {
+                    Some(&g) => {
+                        let shared: Vec<VertexId> = mesh
+                            .face(FaceId(f))
+                            .into_iter()
+                            .filter(|c| mesh.face(FaceId(g)).contains(c))
+                            .collect();
+                        mesh.edge_between(shared[0], shared[1]).expect("an edge")
+                    }
+                    None => exit,
+                };
+                let through = [Through::Ray(0), Through::Ray(1)];
+                strip = offered
+                    .across(&paths, mesh, &strip, (FaceId(f), to), through)
+                    .expect("a strip");
+            }
+            strip
+        })
+    }
+
+    /// Whether two strips on one edge have one id in each reading, each reading of the one
+    /// matched with the reading of the other that names the edge's ends alike; and the same
+    /// range ends' keys too if `ends`.
+    fn described_alike(s: &Strip, t: &Strip, ends: bool) -> bool {
+        (0..2).all(|r| {
+            let q = (0..2).find(|&q| t.a[q] == s.a[r]).expect("one edge");
+            s.ids[r] == t.ids[q]
+                && (!ends || (0..2).all(|i| s.ends[i].map(|k| k[r]) == t.ends[i].map(|k| k[q])))
+        })
+    }
+
+    /// Whether two strips on one edge have different ids in each reading, matched as above.
+    fn described_apart(s: &Strip, t: &Strip) -> bool {
+        (0..2).all(|r| {
+            let q = (0..2).find(|&q| t.a[q] == s.a[r]).expect("one edge");
+            s.ids[r] != t.ids[q]
+        })
+    }
+
+    /// The fan's corners w1, w2 on `x = -1`, n, e2, e1 on `x = 1`, s.
+    const SIX: [[f64; 2]; 6] = [
+        [1.0, 1.0],
+        [0.0, 1.0],
+        [-1.0, 1.0],
+        [-1.0, -1.0],
+        [0.0, -1.0],
+        [1.0, -1.0],
+    ];
+
+    #[test]
+    fn strips_passing_a_vertex_on_either_side_are_described_alike_where_it_is_flat() {
+        // From p across (w1 = v6, w2 = v5) into the fan, past v above it (through n) and below
+        // it (through s), out across (e1 = v8, e2 = v3). In the flat fan, one unfolding, which
+        // the runs see (entered across the crease line (w1, w2)); with v lifted out of the
+        // plane, two unfoldings, which they must not confuse.
+        let beyond = [[6, 5, 1], [6, 1, 2]];
+        let routes: [(u32, u32, &[u32]); 2] = [(6, 6, &[2, 1, 0, 5]), (6, 6, &[2, 3, 4, 5])];
+        let [above, below] = through_fan(&fan(0.0, &SIX, &beyond), routes, [8, 3]);
+        assert!(described_alike(&above, &below, true));
+        let [above, below] = through_fan(&fan(0.25, &SIX, &beyond), routes, [8, 3]);
+        assert!(described_apart(&above, &below));
+    }
+
+    #[test]
+    fn strips_crossing_one_crease_line_at_different_edges_are_described_alike() {
+        // The fan's corner m = v6 on `x = -1` too, between w1 = v7 and w2 = v5: from p across
+        // (w1, m) and on below v, or across (m, w2) and on above v, out across (e1 = v9,
+        // e2 = v3). With the fan flat, the crease line w1 m w2 is straight: one unfolding
+        // across it wherever it is crossed.
+        let seven = [SIX[0], SIX[1], SIX[2], [-1.0, 0.0], SIX[3], SIX[4], SIX[5]];
+        let beyond = [[7, 6, 1], [6, 5, 1]];
+        let routes: [(u32, u32, &[u32]); 2] = [(7, 7, &[3, 4, 5, 6]), (8, 6, &[2, 1, 0, 6])];
+        let [below, above] = through_fan(&fan(0.0, &seven, &beyond), routes, [9, 3]);
+        assert!(described_alike(&below, &above, false));
+        let [below, above] = through_fan(&fan(0.25, &seven, &beyond), routes, [9, 3]);
+        assert!(described_apart(&below, &above));
     }
 }

@@ -444,6 +444,11 @@ impl<S: Scalar> Unfolding<S> {
         SurfacePoint::Edge { edge: e, t }
     }
 
+    /// The flat regions, for number types that keep values.
+    pub(crate) fn flat_regions(&self) -> Option<&FlatRegions<S>> {
+        self.flat.as_ref()
+    }
+
     /// The flat region of a face and the regions' frames, if the face lies in one and the
     /// number type keeps values.
     #[inline]
