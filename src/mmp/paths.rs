@@ -22,11 +22,14 @@
 //! do. Kept only by number types that keep values, on meshes where a chain of faces fixes its
 //! strip: every source a vertex, and no degenerate faces or edges with more than two faces.
 
+use super::flat_region::FlatRegions;
 use super::planar::Planar;
+use super::region_runs::RegionRuns;
 use super::source::SurfacePoint;
 use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
 use crate::scalar::exact::squared_distance;
 use crate::scalar::Scalar;
+use std::cell::RefCell;
 use std::collections::HashMap;
 use std::sync::Arc;
 
@@ -130,6 +133,9 @@ pub(crate) struct CongruentPaths<S> {
     measured: HashMap<(u32, VertexId), Vec<Measured<S>>>,
     /// One image per edge and pair of strip descriptions (see [`CongruentPaths::image`]).
     images: HashMap<(EdgeId, [Vec<u32>; 2]), Planar<S>>,
+    /// The mesh's flat regions, where it has some: a strip's faces in one region are
+    /// described by the run through them (see `region_runs.rs`).
+    regions: Option<RefCell<RegionRuns>>,
 }
 
 /// A vertex distance measured in a flat region: the image in the region's frame, the sigma
@@ -166,7 +172,14 @@ impl<S: Scalar> CongruentPaths<S> {
             lengths: HashMap::new(),
             measured: HashMap::new(),
             images: HashMap::new(),
+            regions: None,
         })
+    }
+
+    /// The same table describing the faces of a strip in one of `regions` by its run there.
+    pub(crate) fn with_regions(mut self, mesh: &TriMesh, regions: Option<&FlatRegions<S>>) -> Self {
+        self.regions = regions.map(|r| RefCell::new(RegionRuns::new(mesh, r)));
+        self
     }
 
     /// The length of `path` (a vertex distance): the expression of a congruent path met
@@ -339,18 +352,52 @@ impl<S: Scalar> CongruentPaths<S> {
             std::mem::swap(&mut a, &mut b);
         }
         let class = |x, y| self.class(mesh, x, y);
-        let mut description = vec![class(from, a)?, class(from, b)?, class(a, b)?];
+        // The run through a flat region the strip is in: its region and anchor, described
+        // when the strip leaves it (see `region_runs.rs`).
+        let region = |f: FaceId| self.regions.as_ref().and_then(|r| r.borrow().region(f));
+        let describe_run = |description: &mut Vec<u32>, anchor, edge| -> Option<()> {
+            let key = self
+                .regions
+                .as_ref()?
+                .borrow_mut()
+                .key(mesh, anchor, edge)?;
+            description.push(RUN);
+            description.extend(key);
+            Some(())
+        };
+        let mut run = region(chain[0]).map(|r| (r, [from; 3]));
+        let mut description = match run {
+            Some(_) => Vec::new(),
+            None => vec![class(from, a)?, class(from, b)?, class(a, b)?],
+        };
         let mut turn = Turn::default();
         for (i, &f) in chain.iter().enumerate().skip(1) {
             let apex = *mesh.face(f).iter().find(|&&c| c != a && c != b)?;
-            let sides = [class(a, apex)?, class(b, apex)?];
+            match (run, region(f)) {
+                (Some((r, _)), Some(s)) if r == s => {}
+                (Some((_, anchor)), here) => {
+                    describe_run(&mut description, anchor, [a, b])?;
+                    run = here.map(|s| (s, [a, b, apex]));
+                }
+                (None, Some(s)) => {
+                    turn.describe(&mut description);
+                    run = Some((s, [a, b, apex]));
+                }
+                (None, None) => {}
+            }
             if i + 1 == chain.len() {
-                turn.describe(&mut description);
-                description.extend(sides);
+                match run {
+                    Some((_, anchor)) => describe_run(&mut description, anchor, [to, to])?,
+                    None => {
+                        turn.describe(&mut description);
+                        description.extend([class(a, apex)?, class(b, apex)?]);
+                    }
+                }
                 return (apex == to).then_some(description);
             }
             let next = shared(f, chain[i + 1])?;
             let entry = class(a, b)?;
+            let sides = [class(a, apex)?, class(b, apex)?];
             let kept = if next.contains(&a) && next.contains(&apex) {
                 b = apex;
                 0
@@ -360,11 +407,18 @@ impl<S: Scalar> CongruentPaths<S> {
             } else {
                 return None;
             };
-            turn.push(&mut description, kept, (entry, sides));
+            if run.is_none() {
+                turn.push(&mut description, kept, (entry, sides));
+            }
         }
         None
     }
 }
+
+/// Marks the description of a run through a flat region in a strip's description: the
+/// classes of its anchor's distances to the edge it left the region by, or to the segment's
+/// end ([`RegionRuns::key`]).
+const RUN: u32 = u32::MAX - 2;
 
 /// Faces of a strip in a row that turn about one corner, the *pivot* (each keeps the corner of
 /// the shared side the one before kept). Laid out in the plane, the last side of the row is
@@ -535,6 +589,29 @@ mod tests {
         assert_eq!(path(0, false), path(1, false));
         assert_eq!(path(0, false), path(1, true));
         assert_ne!(path(0, false), path(2, false));
+    }
+
+    #[test]
+    fn paths_through_a_flat_region_have_one_key_whatever_faces_they_cross() {
+        // From p (v1) across (w1, w2) into the fan about v, past v above it (through n) or
+        // below it (through s), to e1 (v8): in the flat fan one straight line, with v lifted
+        // two (see `strips.rs`'s tests for the mesh).
+        use crate::mmp::strips::tests::{fan, flat_regions, SIX};
+        let key = |lift: f64, faces: &[u32]| {
+            let mesh = fan(lift, &SIX, &[[6, 5, 1], [6, 1, 2]]);
+            let regions = flat_regions(&mesh);
+            let table = CongruentPaths::<f64>::new(&mesh, &[SurfacePoint::Vertex(VertexId(1))])
+                .expect("a mesh whose chains fix their strips")
+                .with_regions(&mesh, Some(&regions));
+            let path = faces
+                .iter()
+                .fold(Path::at_source(VertexId(1)), |p, &f| p.across(FaceId(f)))
+                .to(VertexId(8));
+            table.key(&mesh, &path).expect("a described strip")
+        };
+        let (above, below): (&[u32], &[u32]) = (&[6, 2, 1, 0, 5], &[6, 2, 3, 4]);
+        assert_eq!(key(0.0, above), key(0.0, below));
+        assert_ne!(key(0.25, above), key(0.25, below));
     }
 
     #[test]

@@ -289,7 +289,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
             .max_distance
             .map_or(f64::INFINITY, |d| unfolding.scaled_from_model(d));
         let paths = keeps_values::<S>()
-            .then(|| CongruentPaths::new(mesh, &sources))
+            .then(|| {
+                CongruentPaths::new(mesh, &sources)
+                    .map(|paths| paths.with_regions(mesh, unfolding.flat_regions()))
+            })
             .flatten();
         let offered = paths
             .as_ref()

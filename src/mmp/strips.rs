@@ -516,20 +516,34 @@ impl OfferedWedges {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::mmp::source::SurfacePoint;
 
     /// A fan of faces about `v` (the origin, lifted by `lift`; its other corners are `fan`, in
     /// counterclockwise order) and, beyond its corners on `x = -1`, faces with the corner `p`
     /// in the plane `z = -(x + 1)` (`beyond`).
-    fn fan(lift: f64, fan: &[[f64; 2]], beyond: &[[u32; 3]]) -> TriMesh {
+    pub(crate) fn fan(lift: f64, fan: &[[f64; 2]], beyond: &[[u32; 3]]) -> TriMesh {
         let mut positions = vec![[0.0, 0.0, lift], [-2.0, 0.0, 1.0], [-2.0, -2.0, 1.0]];
         positions.extend(fan.iter().map(|&[x, y]| [x, y, 0.0]));
         let n = fan.len() as u32;
         let mut faces: Vec<[u32; 3]> = (0..n).map(|k| [0, 3 + k, 3 + (k + 1) % n]).collect();
         faces.extend(beyond);
         TriMesh::new(positions, faces).expect("a mesh")
+    }
+
+    /// The mesh's flat regions, as a run that keeps values finds them (`f64` decides exactly
+    /// on these coordinates).
+    pub(crate) fn flat_regions(mesh: &TriMesh) -> FlatRegions<f64> {
+        FlatRegions::new(
+            mesh,
+            &mesh
+                .positions()
+                .iter()
+                .map(|p| p.to_array())
+                .collect::<Vec<_>>(),
+            vec![false; mesh.edge_count()],
+        )
     }
 
     /// The strips from `p` (v1) across face `start` (whose far edge's frame runs from
@@ -598,7 +612,7 @@ mod tests {
     }
 
     /// The fan's corners w1, w2 on `x = -1`, n, e2, e1 on `x = 1`, s.
-    const SIX: [[f64; 2]; 6] = [
+    pub(crate) const SIX: [[f64; 2]; 6] = [
         [1.0, 1.0],
         [0.0, 1.0],
         [-1.0, 1.0],

@@ -4,8 +4,10 @@ coordinates written exactly (subdivided_icosahedron.obj, subdivided_octahedron.o
 128 faces); and the octahedron split into 64 (`subdivide(3)`, 512 faces) with its coordinates
 written to 8 decimals (subdivided_octahedron_512.obj), which leaves the big faces only nearly
 flat; likewise the icosahedron split into 16 (subdivided_icosahedron_8_decimals.obj) and
-the tetrahedron into 64 (subdivided_tetrahedron_8_decimals.obj, 256 faces). The
-coordinates keep the mirror symmetries in the coordinate planes. Needs pyvista."""
+the tetrahedron into 64 (subdivided_tetrahedron_8_decimals.obj, 256 faces); and the
+dodecahedron (its pentagons cut into three triangles) split into 16
+(subdivided_dodecahedron.obj, 576 faces, float32 coordinates written exactly). The coordinates
+keep the mirror symmetries in the coordinate planes. Needs pyvista."""
 import pyvista as pv
 
 
@@ -22,3 +24,4 @@ for name, solid in [("icosahedron", pv.Icosahedron()), ("octahedron", pv.Octahed
 write("subdivided_octahedron_512.obj", pv.Octahedron().triangulate().subdivide(3).clean(), lambda c: "%.8f" % c)
 write("subdivided_icosahedron_8_decimals.obj", pv.Icosahedron().triangulate().subdivide(2).clean(), lambda c: "%.8f" % c)
 write("subdivided_tetrahedron_8_decimals.obj", pv.Tetrahedron().triangulate().subdivide(3).clean(), lambda c: "%.8f" % c)
+write("subdivided_dodecahedron.obj", pv.Dodecahedron().triangulate().subdivide(2).clean(), repr)
