@@ -551,15 +551,7 @@ pub(crate) mod tests {
     /// shares with the one before) out across `exit`, their ends carried along the rays:
     /// described in one table.
     fn through_fan(mesh: &TriMesh, routes: [(u32, u32, &[u32]); 2], exit: [u32; 2]) -> [Strip; 2] {
-        let regions = FlatRegions::<f64>::new(
-            mesh,
-            &mesh
-                .positions()
-                .iter()
-                .map(|p| p.to_array())
-                .collect::<Vec<_>>(),
-            vec![false; mesh.edge_count()],
-        );
+        let regions = flat_regions(mesh);
         let p = VertexId(1);
         let paths = CongruentPaths::<f64>::new(mesh, &[SurfacePoint::Vertex(p)]).expect("paths");
         let mut offered = OfferedWedges::new(mesh, Some(&regions));
