@@ -19,12 +19,15 @@
 //! fix a wedge's image on its edge: the strips of its last segment to the edge's two ends give
 //! the image's distances from them, so wedges whose pairs of keys agree share one image
 //! ([`CongruentPaths::image`]), as images brought round a vertex both ways on a symmetric mesh
-//! do. Kept only by number types that keep values, on meshes where a chain of faces fixes its
-//! strip: every source a vertex, and no degenerate faces or edges with more than two faces.
+//! do. A segment's faces in one flat region are described by the run through them, by where it
+//! came in (see `region_runs.rs`): paths that cross a region by other faces, or cross the line
+//! between two regions at other edges, have one key. Kept only by number types that keep
+//! values, on meshes where a chain of faces fixes its strip: every source a vertex, and no
+//! degenerate faces or edges with more than two faces.
 
 use super::flat_region::FlatRegions;
 use super::planar::Planar;
-use super::region_runs::RegionRuns;
+use super::region_runs::{Entry, RegionRuns, Run};
 use super::source::SurfacePoint;
 use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
 use crate::scalar::exact::squared_distance;
@@ -375,9 +378,22 @@ impl<S: Scalar> CongruentPaths<S> {
             let apex = *mesh.face(f).iter().find(|&&c| c != a && c != b)?;
             match (run, region(f)) {
                 (Some((r, _)), Some(s)) if r == s => {}
-                (Some((_, anchor)), here) => {
-                    describe_run(&mut description, anchor, [a, b])?;
-                    run = here.map(|s| (s, [a, b, apex]));
+                (Some((left, anchor)), here) => {
+                    // Across a crease line, the next run is anchored on the line's ends.
+                    let crease = self.regions.as_ref().and_then(|r| {
+                        let run = Run {
+                            region: left,
+                            anchor: [anchor; 2],
+                            prefix: [0; 2],
+                        };
+                        match r.borrow().entry(Some(&run), f, [[a, b], [b, a]])? {
+                            Entry::Crease(_, s, [line, _]) => Some((s, line)),
+                            _ => None,
+                        }
+                    });
+                    let edge = crease.map_or([a, b], |(_, [u, w, _])| [u, w]);
+                    describe_run(&mut description, anchor, edge)?;
+                    run = crease.or(here.map(|s| (s, [a, b, apex])));
                 }
                 (None, Some(s)) => {
                     turn.describe(&mut description);
@@ -612,6 +628,30 @@ mod tests {
         let (above, below): (&[u32], &[u32]) = (&[6, 2, 1, 0, 5], &[6, 2, 3, 4]);
         assert_eq!(key(0.0, above), key(0.0, below));
         assert_ne!(key(0.25, above), key(0.25, below));
+    }
+
+    #[test]
+    fn paths_crossing_one_crease_line_at_different_edges_have_one_key() {
+        // The fan with a seventh corner m (v6) on `x = -1` between w1 (v7) and w2 (v5): from
+        // p (v1) across (w1, m) and on below v, or across (m, w2) and on above v, to e1 (v9).
+        // With the fan flat, the crease line w1 m w2 is straight: one unfolding across it.
+        use crate::mmp::strips::tests::{fan, flat_regions, SIX};
+        let seven = [SIX[0], SIX[1], SIX[2], [-1.0, 0.0], SIX[3], SIX[4], SIX[5]];
+        let key = |lift: f64, faces: &[u32]| {
+            let mesh = fan(lift, &seven, &[[7, 6, 1], [6, 5, 1]]);
+            let regions = flat_regions(&mesh);
+            let table = CongruentPaths::<f64>::new(&mesh, &[SurfacePoint::Vertex(VertexId(1))])
+                .expect("a mesh whose chains fix their strips")
+                .with_regions(&mesh, Some(&regions));
+            let path = faces
+                .iter()
+                .fold(Path::at_source(VertexId(1)), |p, &f| p.across(FaceId(f)))
+                .to(VertexId(9));
+            table.key(&mesh, &path).expect("a described strip")
+        };
+        let (below, above): (&[u32], &[u32]) = (&[7, 3, 4, 5], &[8, 2, 1, 0, 6]);
+        assert_eq!(key(0.0, below), key(0.0, above));
+        assert_ne!(key(0.25, below), key(0.25, above));
     }
 
     #[test]
