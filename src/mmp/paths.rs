@@ -607,24 +607,32 @@ mod tests {
         assert_ne!(path(0, false), path(2, false));
     }
 
+    /// The key of the path from p (v1) across `faces` to `to` on the fan of `strips.rs`'s tests
+    /// (about v, lifted by `lift`, with `corners` and the faces `beyond` it).
+    fn key_on_fan(
+        (lift, corners, beyond): (f64, &[[f64; 2]], &[[u32; 3]]),
+        faces: &[u32],
+        to: u32,
+    ) -> Vec<u32> {
+        let mesh = crate::mmp::strips::tests::fan(lift, corners, beyond);
+        let regions = crate::mmp::strips::tests::flat_regions(&mesh);
+        let table = CongruentPaths::<f64>::new(&mesh, &[SurfacePoint::Vertex(VertexId(1))])
+            .expect("a mesh whose chains fix their strips")
+            .with_regions(&mesh, Some(&regions));
+        let path = faces
+            .iter()
+            .fold(Path::at_source(VertexId(1)), |p, &f| p.across(FaceId(f)))
+            .to(VertexId(to));
+        table.key(&mesh, &path).expect("a described strip")
+    }
+
     #[test]
     fn paths_through_a_flat_region_have_one_key_whatever_faces_they_cross() {
         // From p (v1) across (w1, w2) into the fan about v, past v above it (through n) or
         // below it (through s), to e1 (v8): in the flat fan one straight line, with v lifted
-        // two (see `strips.rs`'s tests for the mesh).
-        use crate::mmp::strips::tests::{fan, flat_regions, SIX};
-        let key = |lift: f64, faces: &[u32]| {
-            let mesh = fan(lift, &SIX, &[[6, 5, 1], [6, 1, 2]]);
-            let regions = flat_regions(&mesh);
-            let table = CongruentPaths::<f64>::new(&mesh, &[SurfacePoint::Vertex(VertexId(1))])
-                .expect("a mesh whose chains fix their strips")
-                .with_regions(&mesh, Some(&regions));
-            let path = faces
-                .iter()
-                .fold(Path::at_source(VertexId(1)), |p, &f| p.across(FaceId(f)))
-                .to(VertexId(8));
-            table.key(&mesh, &path).expect("a described strip")
-        };
+        // two.
+        let six = &crate::mmp::strips::tests::SIX;
+        let key = |lift, faces: &[u32]| key_on_fan((lift, six, &[[6, 5, 1], [6, 1, 2]]), faces, 8);
         let (above, below): (&[u32], &[u32]) = (&[6, 2, 1, 0, 5], &[6, 2, 3, 4]);
         assert_eq!(key(0.0, above), key(0.0, below));
         assert_ne!(key(0.25, above), key(0.25, below));
@@ -635,20 +643,10 @@ mod tests {
         // The fan with a seventh corner m (v6) on `x = -1` between w1 (v7) and w2 (v5): from
         // p (v1) across (w1, m) and on below v, or across (m, w2) and on above v, to e1 (v9).
         // With the fan flat, the crease line w1 m w2 is straight: one unfolding across it.
-        use crate::mmp::strips::tests::{fan, flat_regions, SIX};
-        let seven = [SIX[0], SIX[1], SIX[2], [-1.0, 0.0], SIX[3], SIX[4], SIX[5]];
-        let key = |lift: f64, faces: &[u32]| {
-            let mesh = fan(lift, &seven, &[[7, 6, 1], [6, 5, 1]]);
-            let regions = flat_regions(&mesh);
-            let table = CongruentPaths::<f64>::new(&mesh, &[SurfacePoint::Vertex(VertexId(1))])
-                .expect("a mesh whose chains fix their strips")
-                .with_regions(&mesh, Some(&regions));
-            let path = faces
-                .iter()
-                .fold(Path::at_source(VertexId(1)), |p, &f| p.across(FaceId(f)))
-                .to(VertexId(9));
-            table.key(&mesh, &path).expect("a described strip")
-        };
+        let six = crate::mmp::strips::tests::SIX;
+        let seven = [six[0], six[1], six[2], [-1.0, 0.0], six[3], six[4], six[5]];
+        let key =
+            |lift, faces: &[u32]| key_on_fan((lift, &seven, &[[7, 6, 1], [6, 5, 1]]), faces, 9);
         let (below, above): (&[u32], &[u32]) = (&[7, 3, 4, 5], &[8, 2, 1, 0, 6]);
         assert_eq!(key(0.0, below), key(0.0, above));
         assert_ne!(key(0.25, below), key(0.25, above));
