@@ -18,10 +18,12 @@
 //! structure. A path is a sum of its segments, so their order does not matter. The same keys
 //! fix a wedge's image on its edge: the strips of its last segment to the edge's two ends give
 //! the image's distances from them, so wedges whose pairs of keys agree share one image
-//! ([`CongruentPaths::image`]), as images brought round a vertex both ways on a symmetric mesh
-//! do. A segment's faces in one flat region are described by the run through them, by where it
-//! came in (see `region_runs.rs`): paths that cross a region by other faces, or cross the line
-//! between two regions at other edges, have one key. Kept only by number types that keep
+//! ([`CongruentPaths::image_key`], [`CongruentPaths::image`]), as images brought round a vertex
+//! both ways on a symmetric mesh do; a range end's shadow line is known by its anchor and the
+//! key of the image that casts it (see `provenance.rs`). A segment's faces in one flat region
+//! are described by the run through them, by where it came in (see `region_runs.rs`): paths
+//! that cross a region by other faces, or cross the line between two regions at other edges,
+//! have one key. Kept only by number types that keep
 //! values, on meshes where a chain of faces fixes its strip: every source a vertex, and no
 //! degenerate faces or edges with more than two faces.
 
@@ -134,8 +136,11 @@ pub(crate) struct CongruentPaths<S> {
     /// The vertex distances measured in flat regions, by region and vertex: the image and
     /// sigma they were measured from, and the expression (see [`CongruentPaths::length_from`]).
     measured: HashMap<(u32, VertexId), Vec<Measured<S>>>,
-    /// One image per edge and pair of strip descriptions (see [`CongruentPaths::image`]).
-    images: HashMap<(EdgeId, [Vec<u32>; 2]), Planar<S>>,
+    /// The key of each edge and pair of strip descriptions met (see
+    /// [`CongruentPaths::image_key`]).
+    image_keys: HashMap<(EdgeId, [Vec<u32>; 2]), u32>,
+    /// One image per key (see [`CongruentPaths::image`]).
+    images: HashMap<u32, Planar<S>>,
     /// The mesh's flat regions, where it has some: a strip's faces in one region are
     /// described by the run through them (see `region_runs.rs`).
     regions: Option<RefCell<RegionRuns>>,
@@ -174,6 +179,7 @@ impl<S: Scalar> CongruentPaths<S> {
             classes,
             lengths: HashMap::new(),
             measured: HashMap::new(),
+            image_keys: HashMap::new(),
             images: HashMap::new(),
             regions: None,
         })
@@ -231,31 +237,35 @@ impl<S: Scalar> CongruentPaths<S> {
         d
     }
 
-    /// The image `at`, in the frame of edge `e` (from its end `ends[0]` to `ends[1]`), of the
-    /// pseudo-source that `path` last passed, seen through the faces the path crossed since:
-    /// the expression of an image met before on `e` whose strips to the edge's two ends have
-    /// the same descriptions, or `at`, kept for those to come. The two strips fix the
-    /// pseudo-source's distances from the edge's ends in the unfolding, so the image up to
-    /// its mirror across the edge's line, which the frame does not tell (`y` is a distance
-    /// from it). So an image brought round a vertex both ways on a mesh with a symmetry (the
-    /// same corners in the opposite order) is one expression, a tie no normal form reaches.
-    pub(crate) fn image(
+    /// The key of the image, in the frame of edge `e` (from its end `ends[0]` to `ends[1]`),
+    /// of the pseudo-source that `path` last passed, seen through the faces the path crossed
+    /// since: the descriptions of its strips to the edge's two ends, interned. The two strips
+    /// fix the pseudo-source's distances from the edge's ends in the unfolding, so the image
+    /// up to its mirror across the edge's line, which the frame does not tell (`y` is a
+    /// distance from it): images of one key are one point of the frame, however they were
+    /// built. `None` where the strips cannot be described.
+    pub(crate) fn image_key(
         &mut self,
         mesh: &TriMesh,
         (e, ends): (EdgeId, [VertexId; 2]),
         path: &Path,
-        at: Planar<S>,
-    ) -> Planar<S> {
+    ) -> Option<u32> {
         let steps = path.last_segment();
-        let key = ends.map(|v| {
+        let [a, b] = ends.map(|v| {
             let mut to = steps.clone();
             to.push(Step::Vertex(v.0));
             self.segment(mesh, &to)
         });
-        match key {
-            [Some(a), Some(b)] => self.images.entry((e, [a, b])).or_insert(at).clone(),
-            _ => at,
-        }
+        let next = self.image_keys.len() as u32;
+        Some(*self.image_keys.entry((e, [a?, b?])).or_insert(next))
+    }
+
+    /// The expression of an image of key `key` ([`CongruentPaths::image_key`]) met before, or
+    /// `at`, kept for those to come. So an image brought round a vertex both ways on a mesh
+    /// with a symmetry (the same corners in the opposite order) is one expression, a tie no
+    /// normal form reaches.
+    pub(crate) fn image(&mut self, key: u32, at: Planar<S>) -> Planar<S> {
+        self.images.entry(key).or_insert(at).clone()
     }
 
     /// The descriptions of the path's segments, sorted and joined.

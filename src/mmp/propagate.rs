@@ -393,22 +393,27 @@ impl<'m, S: Scalar> Engine<'m, S> {
     }
 
     /// Inserts a wedge on its edge, intersecting it with the wedges there.
-    fn insert(&mut self, mut w: Wedge<S>, kept: Provenance<S>) {
+    fn insert(&mut self, mut w: Wedge<S>, mut kept: Provenance<S>) {
         let e = w.edge;
         // One expression for images through congruent strips (see `paths.rs`); in a flat
-        // region the region's frame is the image's construction (see `flat_region.rs`).
-        if let (Some(paths), Some(path), None) = (
-            self.paths.as_mut(),
-            S::kept(&kept.path),
-            S::kept(&kept.image),
-        ) {
-            let at = Planar {
-                x: w.source_x,
-                y: w.source_y,
-            };
-            let edge = (e, self.unfolding.ends(self.mesh, e));
-            let image = paths.image(self.mesh, edge, &path, at);
-            (w.source_x, w.source_y) = (image.x, image.y);
+        // region the region's frame is the image's construction (see `flat_region.rs`). The
+        // keys of the images that cast the shadow lines of the anchored ends, the wedge's and
+        // its anchors' lights', tell those lines apart.
+        if let (Some(paths), Some(path)) = (self.paths.as_mut(), S::kept(&kept.path)) {
+            let (mesh, edge) = (self.mesh, (e, self.unfolding.ends(self.mesh, e)));
+            let anchored = (0..2).any(|i| kept.anchor(i).is_some());
+            let key = (anchored || S::kept(&kept.image).is_none())
+                .then(|| paths.image_key(mesh, edge, &path))
+                .flatten();
+            if let (Some(key), None) = (key, S::kept(&kept.image)) {
+                let at = Planar {
+                    x: w.source_x,
+                    y: w.source_y,
+                };
+                let image = paths.image(key, at);
+                (w.source_x, w.source_y) = (image.x, image.y);
+            }
+            kept = kept.keyed(key, |p| paths.image_key(mesh, edge, p));
         }
         if let (Some(offered), Some(strip)) = (self.offered.as_mut(), S::kept(&kept.strip)) {
             let p = match w.pseudo_source {
@@ -814,7 +819,14 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 let (point, image) = carry(&a.point, a.image.as_ref());
                 let light = a.light.as_ref().map(|l| {
                     let (point, image) = carry(&l.point, l.image.as_ref());
-                    Light { point, image }
+                    let path = l.path.as_ref().map(|p| p.across(face));
+                    let key = None;
+                    Light {
+                        point,
+                        image,
+                        path,
+                        key,
+                    }
                 });
                 return Some(Anchor {
                     point,

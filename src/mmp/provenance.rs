@@ -43,6 +43,12 @@ pub(crate) struct Light<S> {
     pub(crate) point: Planar<S>,
     /// The image in the frame of the flat region the wedge lies in, if it does.
     pub(crate) image: Option<RegionImage<S>>,
+    /// The path that brought the image to the wedge's edge, where the run keeps paths: the
+    /// path of the wedge it lit, continued across the faces this wedge crossed since.
+    pub(crate) path: Option<Path>,
+    /// The key of the image on the wedge's edge, if known
+    /// ([`image_key`](super::paths::CongruentPaths::image_key)).
+    pub(crate) key: Option<u32>,
 }
 
 impl<S: Scalar> Anchor<S> {
@@ -81,6 +87,9 @@ pub(crate) struct Provenance<S: Scalar> {
     /// The shadow lines the range's ends `b0` and `b1` lie on where they are another wedge's
     /// anchored ends but not on a ray of this wedge's: known on this edge only.
     pub(crate) shadows: [S::Kept<ShadowLine<S>>; 2],
+    /// The key of the wedge's image on its edge, if known
+    /// ([`image_key`](super::paths::CongruentPaths::image_key)).
+    pub(crate) image_key: S::Kept<u32>,
 }
 
 /// A shadow line, by the anchor it passes and the image that casts it, in an edge's frame.
@@ -92,6 +101,10 @@ pub(crate) struct ShadowLine<S> {
     pub(crate) light: Planar<S>,
     /// The image in the frame of the flat region the wedge lies in, if it does.
     pub(crate) light_image: Option<RegionImage<S>>,
+    /// The path that brought the image to the edge, and the image's key there, where known
+    /// (as a [`Light`] keeps them).
+    pub(crate) light_path: Option<Path>,
+    pub(crate) light_key: Option<u32>,
 }
 
 impl<S: Scalar> Default for Provenance<S> {
@@ -104,6 +117,7 @@ impl<S: Scalar> Default for Provenance<S> {
             path: Default::default(),
             strip: Default::default(),
             shadows: Default::default(),
+            image_key: Default::default(),
         }
     }
 }
@@ -122,6 +136,7 @@ impl<S: Scalar> Provenance<S> {
             path: Default::default(),
             strip: Default::default(),
             shadows: Default::default(),
+            image_key: Default::default(),
         }
     }
 
@@ -163,17 +178,20 @@ impl<S: Scalar> Provenance<S> {
         let Some(a) = self.anchor(i) else {
             return S::kept(&self.shadows[i]);
         };
-        let (light, light_image) = match a.light {
-            Some(l) => (l.point, l.image),
+        let (light, light_image, light_path, light_key) = match a.light {
+            Some(l) => (l.point, l.image, l.path, l.key),
             None => {
                 let [x, y] = own.map(S::clone);
-                (Planar { x, y }, S::kept(&self.image))
+                let (path, key) = (S::kept(&self.path), S::kept(&self.image_key));
+                (Planar { x, y }, S::kept(&self.image), path, key)
             }
         };
         Some(ShadowLine {
             anchor: a.point,
             light,
             light_image,
+            light_path,
+            light_key,
         })
     }
 
@@ -206,6 +224,8 @@ impl<S: Scalar> Provenance<S> {
                     light: Some(Light {
                         point: line.light,
                         image: line.light_image,
+                        path: line.light_path,
+                        key: line.light_key,
                     }),
                 };
                 self.anchors[i] = S::keep(|| anchor);
@@ -243,6 +263,7 @@ impl<S: Scalar> Provenance<S> {
             strip: S::kept(&self.strip)
                 .map_or_else(Default::default, |strip| S::keep(|| strip.trimmed(keep))),
             shadows: kept_ends(&self.shadows, keep),
+            image_key: self.image_key.clone(),
         }
     }
 
@@ -283,6 +304,12 @@ impl<S: Scalar> Provenance<S> {
         } else {
             next.path
         };
+        // One image, proved so: either key describes it.
+        let image_key = if S::kept(&self.image_key).is_some() {
+            self.image_key
+        } else {
+            next.image_key
+        };
         Provenance {
             at_ends: [either(first_0, next_0), either(first_1, next_1)],
             anchors: [anchor_0, anchor_1],
@@ -294,7 +321,27 @@ impl<S: Scalar> Provenance<S> {
                 _ => Default::default(),
             },
             shadows: [shadow_0, shadow_1],
+            image_key,
         }
+    }
+
+    /// The same provenance with the keys of the images on the wedge's edge: its own, `own`,
+    /// and its anchors' lights', by `key_of` their paths
+    /// ([`image_key`](super::paths::CongruentPaths::image_key)).
+    pub(crate) fn keyed(
+        mut self,
+        own: Option<u32>,
+        mut key_of: impl FnMut(&Path) -> Option<u32>,
+    ) -> Self {
+        self.image_key = own.map_or_else(Default::default, |k| S::keep(|| k));
+        for kept in &mut self.anchors {
+            let Some(mut a) = S::kept(kept) else { continue };
+            if let Some(light) = a.light.as_mut() {
+                light.key = light.path.as_ref().and_then(&mut key_of);
+                *kept = S::keep(|| a);
+            }
+        }
+        self
     }
 }
 
@@ -322,14 +369,19 @@ pub(crate) fn range_end<'a, S: Scalar>(
 
 /// Whether two range ends on one edge are one point by structure: their strips name them
 /// alike, or both lie on one shadow line, of one anchor from one image (the line meets the
-/// edge once). `false` says nothing.
+/// edge once): the image proved one point, or of one key (the mirror images of a light brought
+/// to the edge from its two sides, through mirror-image flat regions, are one point of the
+/// edge's frame but two expressions no normal form relates). `false` says nothing.
 pub(crate) fn one_end<S: Scalar>(
     (_, ka, i, sa): RangeEnd<'_, S>,
     (_, kb, j, sb): RangeEnd<'_, S>,
 ) -> bool {
     let same = |p: &Planar<S>, q: &Planar<S>| S::proved_same_point([&p.x, &p.y], [&q.x, &q.y]);
     let one_shadow = || match (ka.shadow_line(i, sa), kb.shadow_line(j, sb)) {
-        (Some(p), Some(q)) => same(&p.anchor, &q.anchor) && same(&p.light, &q.light),
+        (Some(p), Some(q)) => {
+            let one_key = p.light_key.is_some() && p.light_key == q.light_key;
+            same(&p.anchor, &q.anchor) && (one_key || same(&p.light, &q.light))
+        }
         _ => false,
     };
     ka.same_end(i, kb, j) || one_shadow()
