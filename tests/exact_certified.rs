@@ -506,6 +506,18 @@ fn a_root_s_sign_is_read_from_its_refined_enclosure() {
     assert_certified_and_bounded("subdivided_tetrahedron_8_decimals.obj", &[1]);
 }
 
+/// A box with a hole bored through it, split and decimated to 664 faces
+/// (`tests/data/decimated_box_with_hole.py`). A saddle lit across a sliver face sends its own
+/// wedge back across that face to the edge the lit wedge crossed: the two distance functions
+/// touch (the saddle is seen straight from the lit wedge's image across the edge), a zero gap
+/// of images too deep for a normal form. The engine knows it by the wedges' paths
+/// (`Path::seen_straight_from`). Without it, 2 decisions stayed uncertified from v117 (and 1 from
+/// v235; 1 from each of v486 and v771 on fandisk decimated to 1,940 faces).
+#[test]
+fn a_saddle_seen_straight_across_the_edge_touches_the_wedge_that_lit_it() {
+    assert_certified_and_bounded("decimated_box_with_hole.obj", &[117]);
+}
+
 /// The same tetrahedron from v129 and v69, vertices on its mirror planes. The wedge of a vertex
 /// and the wedge lit past the vertex's mirror twin reach an edge that lies in a mirror plane
 /// from its two sides, through mirror-image flat regions, and end on one shadow line: the

@@ -14,6 +14,7 @@ use super::planar::Planar;
 use super::provenance::{compare_ends, keeps_values, range_end, Anchor, Provenance, RangeEnd};
 use super::stats::{Eq2Counts, Eq2Decision};
 use super::wedge::{PseudoSource, Wedge, WedgeFields};
+use crate::mesh::TriMesh;
 use crate::scalar::{BisectorRoots, Eq2Case, Eq2Coefficients, Lower, Scalar, SourceDistance};
 use std::cmp::Ordering;
 
@@ -158,7 +159,7 @@ fn split_shared_range<S: Scalar>(
     theirs: &SourceDistance<S>,
     mine: &SourceDistance<S>,
     ([lo, hi], end_of): ([S; 2], [Option<EndOf>; 2]),
-    (known, lower): ([Option<[S; 2]>; 2], Option<Owner>),
+    (known, lower, seen): ([Option<[S; 2]>; 2], Option<Owner>, Option<bool>),
     id: u32,
 ) -> (Eq2Case, bool) {
     if let Some(owner) = lower {
@@ -195,7 +196,10 @@ fn split_shared_range<S: Scalar>(
         push_piece(pieces, [lo, hi], Owner::NEW, end_of);
         return (Eq2Case::None, false);
     }
-    let bisector = S::bisector(theirs, mine, &lo, &hi, &known);
+    let bisector = match seen {
+        Some(opposite) => S::bisector_seen_straight(theirs, mine, &lo, &hi, &known, opposite),
+        None => S::bisector(theirs, mine, &lo, &hi, &known),
+    };
     if matches!(bisector.roots, BisectorRoots::Infinite) {
         push_piece(pieces, [lo, hi], Owner::old(id), end_of);
         return (Eq2Case::Infinite, true);
@@ -297,6 +301,23 @@ fn lower_by_anchor<S: Scalar>(
     }
 }
 
+/// Where one of two wedges on an edge is the wedge of a vertex that the other's image saw
+/// straight ([`seen_straight_from`](super::paths::Path::seen_straight_from)): whether the two
+/// images lie on opposite sides of the edge's line. Asked only of number types that keep
+/// paths.
+fn seen_straight<S: Scalar>(
+    mesh: Option<&TriMesh>,
+    a: &Provenance<S>,
+    b: &Provenance<S>,
+) -> Option<bool> {
+    if !keeps_values::<S>() {
+        return None;
+    }
+    let (mesh, a, b) = (mesh?, S::kept(&a.path)?, S::kept(&b.path)?);
+    a.seen_straight_from(mesh, &b)
+        .or_else(|| b.seen_straight_from(mesh, &a))
+}
+
 /// The distance at range end `end` (`i`: 0 for the shared range's `lo`, 1 for its `hi`) where
 /// it is the crossing of the wedge that owns it with a wedge of the other one's distance
 /// function: a tie known by structure, which eq. (2) would meet as a root exactly at the end.
@@ -389,7 +410,7 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar, W: WedgeFields<S> + 'a>(
     pieces: &mut Vec<Piece<S>>,
     overlapping: impl Iterator<Item = (u32, &'a W, &'a Provenance<S>)>,
     (w, my_kept): (&Wedge<S>, &Provenance<S>),
-    length: &S,
+    (length, mesh): (&S, Option<&TriMesh>),
 ) {
     let mine = w.distance_function();
     let mut cursor = w.b0.clone();
@@ -444,13 +465,15 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar, W: WedgeFields<S> + 'a>(
         let kept = [old_kept, my_kept];
         let known = known_at_ends([&lo, &hi], &owns, kept, [&theirs, &mine], &vertices);
         let lower = lower_by_anchor((old, old_kept, id), (w, my_kept), &vertices);
+        let seen = seen_straight(mesh, old_kept, my_kept);
         // Whose own range end `lo` and `hi` are, the existing wedge's first.
         let end_of = [0, 1].map(|i| {
             let [old_owns, new_owns] = owns[i];
             (old_owns.then_some((Owner::old(id), i))).or(new_owns.then_some((Owner::NEW, i)))
         });
         let range = ([lo, hi.clone()], end_of);
-        let (case, solved) = split_shared_range(pieces, &theirs, &mine, range, (known, lower), id);
+        let structure = (known, lower, seen);
+        let (case, solved) = split_shared_range(pieces, &theirs, &mine, range, structure, id);
         counts.count(case);
         if let (Some(log), Some((range, coefficients))) = (log.as_deref_mut(), record) {
             log.push(Eq2Decision {
@@ -517,7 +540,7 @@ pub fn intersect<S: Scalar>(
         &mut pieces,
         overlapping,
         new,
-        edge_length,
+        (edge_length, None),
     );
     let first = existing.iter().position(overlaps).unwrap_or(existing.len());
     let mut result: Vec<Wedge<S>> = existing[..first].to_vec();

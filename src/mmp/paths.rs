@@ -98,6 +98,51 @@ impl Path {
         self.then(Step::Vertex(v.0))
     }
 
+    /// Where this path, a vertex's wedge's, starts at a vertex that the image of `lit` (the
+    /// path of a wedge on the same edge) saw straight: the vertex reached across a face by
+    /// that wedge's lineage, and `lit` the path of the wedge that crossed the face, or of a
+    /// descendant carried on across faces around the vertex (unfolding about edges through the
+    /// vertex keeps it where the image saw it). A vertex keeps the path of the distance it
+    /// keeps, so its distance is that image's distance function at it. `Some(opposite)`:
+    /// whether the two wedges came to their edge across different faces (their images on
+    /// opposite sides of its line).
+    pub(crate) fn seen_straight_from(&self, mesh: &TriMesh, lit: &Path) -> Option<bool> {
+        let (Step::Face(back), Some(Path(at))) = (self.0.step, &self.0.before) else {
+            return None;
+        };
+        let (Step::Vertex(v), Some(reached)) = (at.step, &at.before) else {
+            return None;
+        };
+        let Step::Face(_) = reached.0.step else {
+            return None;
+        };
+        let Step::Face(last) = lit.0.step else {
+            return None;
+        };
+        let opposite = last != back;
+        if reached
+            .0
+            .before
+            .as_ref()
+            .is_some_and(|p| Arc::ptr_eq(&p.0, &lit.0))
+        {
+            return Some(opposite);
+        }
+        let around = |f: u32| mesh.face(FaceId(f)).contains(&VertexId(v));
+        let mut at = lit;
+        // A fan around a vertex has as many faces as the vertex.
+        for _ in 0..=mesh.vertex_faces(VertexId(v)).len() {
+            if Arc::ptr_eq(&at.0, &reached.0) {
+                return Some(opposite);
+            }
+            match (at.0.step, &at.0.before) {
+                (Step::Face(f), Some(before)) if around(f) => at = before,
+                _ => return None,
+            }
+        }
+        None
+    }
+
     /// The steps since the path last passed a vertex (the pseudo-source of its last segment),
     /// that vertex first.
     fn last_segment(&self) -> Vec<Step> {
@@ -525,6 +570,35 @@ mod tests {
     use super::*;
     use crate::mesh::shapes;
     use std::collections::HashSet;
+
+    /// The wedges that see straight a vertex that their lineage lit across a face: the wedge
+    /// that crossed the face (on the face's other side), the one lit across it (on the same
+    /// side), its descendants across faces around the vertex; not an equal path of another
+    /// wedge, nor a descendant across a face off the vertex.
+    #[test]
+    fn a_vertex_is_seen_straight_from_the_lineage_that_lit_it() {
+        // Faces around vertex 0 of the icosahedron, and one face off it.
+        let mesh = shapes::icosahedron();
+        let fan = mesh.vertex_faces(VertexId(0)).to_vec();
+        let off = (0..mesh.face_count() as u32)
+            .map(FaceId)
+            .find(|&f| !mesh.face(f).contains(&VertexId(0)))
+            .expect("a face off the vertex");
+        let parent = Path::at_source(VertexId(9)).across(off);
+        let lit = parent.across(fan[0]);
+        let vertex = lit.to(VertexId(0));
+        let back = vertex.across(fan[0]);
+        assert_eq!(back.seen_straight_from(&mesh, &parent), Some(true));
+        assert_eq!(back.seen_straight_from(&mesh, &lit), Some(false));
+        let around = vertex.across(fan[2]);
+        let carried = lit.across(fan[1]).across(fan[2]);
+        assert_eq!(around.seen_straight_from(&mesh, &carried), Some(false));
+        assert_eq!(back.seen_straight_from(&mesh, &carried), Some(true));
+        let alike = Path::at_source(VertexId(9)).across(off).across(fan[0]);
+        assert_eq!(back.seen_straight_from(&mesh, &alike), None);
+        assert_eq!(around.seen_straight_from(&mesh, &lit.across(off)), None);
+        assert_eq!(lit.across(fan[1]).seen_straight_from(&mesh, &lit), None);
+    }
 
     /// The paths from a corner of each face across its edge to the far corner of the face
     /// beyond, with their keys.

@@ -274,6 +274,10 @@ impl<S: Scalar> Arrivals<S> for Reach<'_, S> {
         let path = continued::<S>(&kept.path, |p| p.to(v));
         self.front.offer_vertex(surface, v, (d, path), w);
     }
+
+    fn mesh(&self) -> Option<&TriMesh> {
+        Some(self.mesh)
+    }
 }
 
 impl<'m, S: Scalar> Engine<'m, S> {

@@ -13,7 +13,7 @@ use super::provenance::{compare_ends, keeps_values, one_end, range_end, Provenan
 use super::stats::Stats;
 use super::strips::OfferedWedges;
 use super::wedge::{wedge_fields, PseudoSource, Wedge, WedgeFields};
-use crate::mesh::{EdgeId, Side, SourceId, VertexId};
+use crate::mesh::{EdgeId, Side, SourceId, TriMesh, VertexId};
 use crate::scalar::{Scalar, Site, SourceDistance, FRONT_MARGIN};
 use std::cmp::Ordering;
 use std::ops::Range;
@@ -166,6 +166,10 @@ pub(crate) trait Arrivals<S: Scalar> {
     /// A wedge, with what it keeps of its construction, reaches the vertex `v` of its
     /// edge at distance `d`.
     fn reach(&mut self, v: VertexId, d: S, wedge: (&Wedge<S>, &Provenance<S>));
+    /// The mesh, where the wedges' paths are read against it.
+    fn mesh(&self) -> Option<&TriMesh> {
+        None
+    }
 }
 
 /// Whether the wedge of a queue event is due ([`WedgeLists::due`]).
@@ -363,7 +367,8 @@ impl<S: Scalar> WedgeLists<S> {
         // An overlapped wedge is named by its place among the overlapped ones.
         let overlapping = (0..).zip(&list[first..end]).map(|(k, x)| (k, x, &x.kept));
         let new = (&w, &kept);
-        cut_into_pieces(&mut stats.eq2, log, &mut pieces, overlapping, new, length);
+        let edge = (length, arrivals.mesh());
+        cut_into_pieces(&mut stats.eq2, log, &mut pieces, overlapping, new, edge);
         if pieces.iter().any(|p| p.owner == Owner::NEW) {
             let edge = (length, ends);
             let run = (stats, arrivals, strips);

@@ -283,6 +283,24 @@ pub trait Scalar: Field {
         known: &[Option<[Self; 2]>; 2],
     ) -> Bisector<Self>;
 
+    /// [`Scalar::bisector`] of two wedges of which one is the wedge of a vertex that the
+    /// other's image lit (the engine knows it by their paths): the vertex is seen straight
+    /// from that image, and the two distance functions touch (the gap of the pseudo-sources,
+    /// placed as the surface places them, is zero by structure). `opposite`: whether the two
+    /// images lie on opposite sides of the edge's line in the surface. A backend that proves
+    /// ties by structure takes that zero from the engine rather than decide it; the others
+    /// meet the two wedges as any two.
+    fn bisector_seen_straight(
+        a: &SourceDistance<Self>,
+        b: &SourceDistance<Self>,
+        lo: &Self,
+        hi: &Self,
+        known: &[Option<[Self; 2]>; 2],
+        _opposite: bool,
+    ) -> Bisector<Self> {
+        Self::bisector(a, b, lo, hi, known)
+    }
+
     /// The orientation of the triangle `(p, q, r)`: the sign of `(q - p) x (r - p)`, positive
     /// when `r` lies to the left of the line from `p` to `q`.
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign;

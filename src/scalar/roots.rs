@@ -120,6 +120,38 @@ pub(crate) trait InputSigns {
     /// The sign of eq. (2)'s `P` at the start (`false`) or end (`true`) of the range
     /// ([`eq2_at`]): near zero when the range starts where the two wedges already cross.
     fn at_end(&self, end: bool) -> Option<Sign>;
+
+    /// Where the engine knows by structure that one pseudo-source is seen straight from the
+    /// other (see [`SeenStraight`]): whether the two lie on opposite sides of the edge's line
+    /// in the surface. Their gap, taken as the surface places them, is then zero, asked of no
+    /// arithmetic.
+    fn seen_straight(&self) -> Option<bool> {
+        None
+    }
+}
+
+/// No sign decided apart, and one pseudo-source seen straight from the other: a vertex lit
+/// across a face by a wedge, and the vertex's own wedge on an edge that wedge, its parent or
+/// a descendant around the vertex reached (see `mmp/paths.rs`, `Path::seen_straight_from`).
+/// The vertex's distance is the lit wedge's distance function there, so the two distance
+/// functions touch. `opposite`: whether the two images lie on opposite sides of the edge's
+/// line in the surface.
+pub(crate) struct SeenStraight {
+    pub(crate) opposite: bool,
+}
+
+impl InputSigns for SeenStraight {
+    fn gap(&self, _mirror: bool) -> Option<Sign> {
+        None
+    }
+
+    fn at_end(&self, _end: bool) -> Option<Sign> {
+        None
+    }
+
+    fn seen_straight(&self) -> Option<bool> {
+        Some(self.opposite)
+    }
 }
 
 /// No sign decided apart: the number type decides every sign itself.
@@ -281,9 +313,17 @@ pub(crate) fn crossings<T: CertifiedSign>(
     signs: &impl InputSigns,
     ties: [bool; 2],
 ) -> Option<Crossings<T>> {
+    // One pseudo-source seen straight from the other by structure: their gap as the surface
+    // places them is zero (mirrored where the frames put on one side of the line images that
+    // lie on opposite sides, or the other way round).
+    let straight = |mirror: bool| {
+        let opposite = signs.seen_straight()?;
+        let same_in_frame = a.y.certified_sign()?.times(b.y.certified_sign()?) != Sign::Negative;
+        (mirror == (opposite == same_in_frame)).then_some(Sign::Zero)
+    };
     let gap = |mirror| {
-        source_gap(a, b, mirror)
-            .certified_sign()
+        straight(mirror)
+            .or_else(|| source_gap(a, b, mirror).certified_sign())
             .or_else(|| signs.gap(mirror))
     };
     let terms = Eq2Terms::new(a, b, lo);
@@ -710,30 +750,32 @@ mod tests {
     #[derive(Clone, Debug)]
     struct NearZeroUnproved(Q);
 
+    /// The arithmetic of a wrapper of [`Q`], done on the rationals.
     macro_rules! delegate {
-        ($($tr:ident $f:ident),*) => {$(
-            impl std::ops::$tr for NearZeroUnproved {
-                type Output = NearZeroUnproved;
-                fn $f(self, other: NearZeroUnproved) -> NearZeroUnproved {
-                    NearZeroUnproved(std::ops::$tr::$f(self.0, &other.0))
+        ($t:ident: $($tr:ident $f:ident),*) => {
+            $(
+                impl std::ops::$tr for $t {
+                    type Output = $t;
+                    fn $f(self, other: $t) -> $t {
+                        $t(std::ops::$tr::$f(self.0, &other.0))
+                    }
+                }
+                impl<'a> std::ops::$tr<&'a $t> for $t {
+                    type Output = $t;
+                    fn $f(self, other: &'a $t) -> $t {
+                        $t(std::ops::$tr::$f(self.0, &other.0))
+                    }
+                }
+            )*
+            impl std::ops::Neg for $t {
+                type Output = $t;
+                fn neg(self) -> $t {
+                    $t(-self.0)
                 }
             }
-            impl<'a> std::ops::$tr<&'a NearZeroUnproved> for NearZeroUnproved {
-                type Output = NearZeroUnproved;
-                fn $f(self, other: &'a NearZeroUnproved) -> NearZeroUnproved {
-                    NearZeroUnproved(std::ops::$tr::$f(self.0, &other.0))
-                }
-            }
-        )*};
+        };
     }
-    delegate!(Add add, Sub sub, Mul mul, Div div);
-
-    impl std::ops::Neg for NearZeroUnproved {
-        type Output = NearZeroUnproved;
-        fn neg(self) -> NearZeroUnproved {
-            NearZeroUnproved(-self.0)
-        }
-    }
+    delegate!(NearZeroUnproved: Add add, Sub sub, Mul mul, Div div);
 
     impl Ring for NearZeroUnproved {
         fn from_f64(x: f64) -> Self {
@@ -753,6 +795,25 @@ mod tests {
             let near = (self.0.clone() - &eighth).certified_sign() == Some(Sign::Negative)
                 && (self.0.clone() + &eighth).certified_sign() == Some(Sign::Positive);
             (!near).then(|| self.0.certified_sign()).flatten()
+        }
+    }
+
+    /// Exact rationals that decide every sign but zero's, as an exact backend that cannot prove
+    /// a zero: [`CertifiedSign::certified_sign`] is `None` there.
+    #[derive(Clone, Debug)]
+    struct ZeroUndecided(Q);
+
+    delegate!(ZeroUndecided: Add add, Sub sub, Mul mul, Div div);
+
+    impl Ring for ZeroUndecided {
+        fn from_f64(x: f64) -> Self {
+            ZeroUndecided(Q::from_f64(x))
+        }
+    }
+
+    impl CertifiedSign for ZeroUndecided {
+        fn certified_sign(&self) -> Option<Sign> {
+            self.0.certified_sign().filter(|&s| s != Sign::Zero)
         }
     }
 
@@ -793,6 +854,45 @@ mod tests {
     ];
 
     proptest! {
+        /// A vertex seen straight from the image that lit it, `sigma2 = sigma1 + |s1 s2|` in
+        /// the surface: on opposite sides of the edge's line or on one side, both frames
+        /// giving `y >= 0` or the second `y <= 0`. With no zero decided by arithmetic, the
+        /// crossings are read only where the structure is told, and then as exact signs read
+        /// them.
+        #[test]
+        fn a_vertex_seen_straight_touches_the_image_that_lit_it(
+            i in 0..8usize, x1 in -8..9i32, t in 1..8i32, s1 in 0..40i32, lo in -8..9i32,
+            width in 1..40i32, opposite in any::<bool>(), flip in any::<bool>(),
+        ) {
+            let (dx, dy, d) = AT_WHOLE_DISTANCES[i];
+            // Images apart along the edge (`alpha != 0`), so that the gap is the only zero.
+            prop_assume!(dy > 0.0 && dx != 0.0);
+            let (x1, t) = (f64::from(x1) / 4.0, f64::from(t) / 8.0);
+            // In the surface: `y1 > 0`, and `y2 = y1 - dy` (opposite sides) or `y1 + dy`.
+            let y1 = dy * t;
+            let y2 = if opposite { y1 - dy } else { y1 + dy };
+            // The frame keeps `y2`'s sign, or gives it as a distance from the line.
+            let y2 = if flip { y2.abs() } else { y2 };
+            let s1 = f64::from(s1) / 4.0;
+            let (a, b) = (source(x1, y1, s1), source(x1 + dx, y2, s1 + d));
+            let mirrored = flip && opposite;
+            prop_assert_eq!(source_gap(&a, &b, mirrored), Q::from_f64(0.0));
+            let lo = f64::from(lo) / 2.0;
+            let hi = lo + f64::from(width) / 4.0;
+            let exact = crossings(&a, &b, &Q::from_f64(lo), &Q::from_f64(hi), &InT, [false; 2]);
+            let hide = |d: &SourceDistance<Q>| SourceDistance {
+                x: ZeroUndecided(d.x.clone()),
+                y: ZeroUndecided(d.y.clone()),
+                sigma: ZeroUndecided(d.sigma.clone()),
+            };
+            let (ha, hb) = (hide(&a), hide(&b));
+            let (hlo, hhi) = (ZeroUndecided::from_f64(lo), ZeroUndecided::from_f64(hi));
+            let told = crossings(&ha, &hb, &hlo, &hhi, &SeenStraight { opposite }, [false; 2]);
+            let exact = reading(exact, Q::clone);
+            prop_assert_ne!(&exact, &Reading::Undecided);
+            prop_assert_eq!(reading(told, |v| v.0.clone()), exact);
+        }
+
         /// Two pseudo-sources whose distances tie at the range's start, `lo = 0`, or whose sigmas
         /// differ by the sum of their distances from it (a mirror root there), or nearly: `P(0)`
         /// is zero or small. With its sign unproved, the roots the engine reads are those of

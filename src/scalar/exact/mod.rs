@@ -147,6 +147,41 @@ pub struct DigitsOutOfReach {
 }
 
 impl Real {
+    /// [`Scalar::bisector`] with the signs the engine knows apart (`signs`).
+    fn meeting(
+        a: &SourceDistance<Real>,
+        b: &SourceDistance<Real>,
+        [lo, hi]: [&Real; 2],
+        known: &[Option<[Real; 2]>; 2],
+        signs: &impl roots::InputSigns,
+    ) -> Bisector<Real> {
+        let known = known
+            .each_ref()
+            .map(|v| v.as_ref().map(|[t, m]| (t.clone() - m).decide()));
+        let ties = known.map(|s| s == Some(Sign::Zero));
+        let crossings = roots::crossings(a, b, lo, hi, signs, ties)
+            .expect("the exact backend decides every sign");
+        let changes = crossings.changes();
+        let first = roots::first_stretch_sign(
+            (a, b),
+            [lo, hi],
+            changes,
+            &roots::InT,
+            known,
+            <Real as CertifiedSign>::clear_sign,
+        );
+        let roots = roots::into_roots(crossings, lo);
+        let first = first.unwrap_or_else(|| {
+            let end = match &roots {
+                BisectorRoots::One(r) | BisectorRoots::Touch(r) | BisectorRoots::Two(r, _) => r,
+                _ => hi,
+            };
+            let mid = (lo.clone() + end) * &Real::from_f64(0.5);
+            (a.at(&mid) - &b.at(&mid)).decide()
+        });
+        Bisector::alternating(roots, Lower::of_difference(first))
+    }
+
     /// The exact value of a rational.
     pub fn from_rational(r: Rational) -> Real {
         Real(Node::leaf(r))
@@ -683,31 +718,20 @@ impl Scalar for Real {
         hi: &Self,
         known: &[Option<[Self; 2]>; 2],
     ) -> Bisector<Self> {
-        let known = known
-            .each_ref()
-            .map(|v| v.as_ref().map(|[t, m]| (t.clone() - m).decide()));
-        let ties = known.map(|s| s == Some(Sign::Zero));
-        let crossings = roots::crossings(a, b, lo, hi, &roots::InT, ties)
-            .expect("the exact backend decides every sign");
-        let changes = crossings.changes();
-        let first = roots::first_stretch_sign(
-            (a, b),
-            [lo, hi],
-            changes,
-            &roots::InT,
-            known,
-            <Real as CertifiedSign>::clear_sign,
-        );
-        let roots = roots::into_roots(crossings, lo);
-        let first = first.unwrap_or_else(|| {
-            let end = match &roots {
-                BisectorRoots::One(r) | BisectorRoots::Touch(r) | BisectorRoots::Two(r, _) => r,
-                _ => hi,
-            };
-            let mid = (lo.clone() + end) * &Real::from_f64(0.5);
-            (a.at(&mid) - &b.at(&mid)).decide()
-        });
-        Bisector::alternating(roots, Lower::of_difference(first))
+        Self::meeting(a, b, [lo, hi], known, &roots::InT)
+    }
+
+    /// As [`Scalar::bisector`], the zero gap taken from the structure
+    /// ([`roots::SeenStraight`]).
+    fn bisector_seen_straight(
+        a: &SourceDistance<Self>,
+        b: &SourceDistance<Self>,
+        lo: &Self,
+        hi: &Self,
+        known: &[Option<[Self; 2]>; 2],
+        opposite: bool,
+    ) -> Bisector<Self> {
+        Self::meeting(a, b, [lo, hi], known, &roots::SeenStraight { opposite })
     }
 
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign {
