@@ -518,6 +518,19 @@ fn a_saddle_seen_straight_across_the_edge_touches_the_wedge_that_lit_it() {
     assert_certified_and_bounded("decimated_box_with_hole.obj", &[117]);
 }
 
+/// The same box from v180. Its walls are flat facets meeting on straight creases (the hole's
+/// generatrices, the rim), whose vertices have an angle sum of exactly 2 pi: chains of faces
+/// that pass such a vertex on either side lay the faces beyond it out alike. A saddle is lit by
+/// a wedge that passed one on one side and seen straight from a wedge on the same edge that
+/// passed it on the other (one image, `CongruentPaths::same_image`), and a vertex's sigma is
+/// another wedge's distance there by paths that went round one either way (one key once each
+/// chain turns about such a vertex the short way, `paths.rs`). Without both, 4 decisions stayed
+/// uncertified (1 with the images compared alone; 2 from v90).
+#[test]
+fn paths_round_a_vertex_on_a_straight_crease_either_way_are_one() {
+    assert_certified_and_bounded("decimated_box_with_hole.obj", &[180]);
+}
+
 /// The same tetrahedron from v129 and v69, vertices on its mirror planes. The wedge of a vertex
 /// and the wedge lit past the vertex's mirror twin reach an edge that lies in a mirror plane
 /// from its two sides, through mirror-image flat regions, and end on one shadow line: the

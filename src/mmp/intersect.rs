@@ -10,6 +10,7 @@
 //! Pure functions on wedges: they cut the edge into pieces and name each piece's owner; the
 //! engine's edge lists ([`wedge_lists`](super::wedge_lists)) store the pieces as wedges.
 
+use super::paths::{CongruentPaths, Path};
 use super::planar::Planar;
 use super::provenance::{compare_ends, keeps_values, range_end, Anchor, Provenance, RangeEnd};
 use super::stats::{Eq2Counts, Eq2Decision};
@@ -159,7 +160,11 @@ fn split_shared_range<S: Scalar>(
     theirs: &SourceDistance<S>,
     mine: &SourceDistance<S>,
     ([lo, hi], end_of): ([S; 2], [Option<EndOf>; 2]),
-    (known, lower, seen): ([Option<[S; 2]>; 2], Option<Owner>, Option<bool>),
+    (known, lower, seen): (
+        [Option<[S; 2]>; 2],
+        Option<Owner>,
+        impl FnOnce() -> Option<bool>,
+    ),
     id: u32,
 ) -> (Eq2Case, bool) {
     if let Some(owner) = lower {
@@ -196,7 +201,7 @@ fn split_shared_range<S: Scalar>(
         push_piece(pieces, [lo, hi], Owner::NEW, end_of);
         return (Eq2Case::None, false);
     }
-    let bisector = match seen {
+    let bisector = match seen() {
         Some(opposite) => S::bisector_seen_straight(theirs, mine, &lo, &hi, &known, opposite),
         None => S::bisector(theirs, mine, &lo, &hi, &known),
     };
@@ -302,20 +307,21 @@ fn lower_by_anchor<S: Scalar>(
 }
 
 /// Where one of two wedges on an edge is the wedge of a vertex that the other's image saw
-/// straight ([`seen_straight_from`](super::paths::Path::seen_straight_from)): whether the two
-/// images lie on opposite sides of the edge's line. Asked only of number types that keep
-/// paths.
+/// straight ([`seen_straight_from`](super::paths::Path::seen_straight_from), the lineage's
+/// paths compared by [`CongruentPaths::same_image`]): whether the two images lie on opposite
+/// sides of the edge's line. Asked only of number types that keep paths.
 fn seen_straight<S: Scalar>(
-    mesh: Option<&TriMesh>,
+    congruence: Option<(&TriMesh, &CongruentPaths<S>)>,
     a: &Provenance<S>,
     b: &Provenance<S>,
 ) -> Option<bool> {
     if !keeps_values::<S>() {
         return None;
     }
-    let (mesh, a, b) = (mesh?, S::kept(&a.path)?, S::kept(&b.path)?);
-    a.seen_straight_from(mesh, &b)
-        .or_else(|| b.seen_straight_from(mesh, &a))
+    let ((mesh, paths), a, b) = (congruence?, S::kept(&a.path)?, S::kept(&b.path)?);
+    let same = |p: &Path, q: &Path| paths.same_image(mesh, p, q);
+    a.seen_straight_from(mesh, &b, same)
+        .or_else(|| b.seen_straight_from(mesh, &a, same))
 }
 
 /// The distance at range end `end` (`i`: 0 for the shared range's `lo`, 1 for its `hi`) where
@@ -410,7 +416,7 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar, W: WedgeFields<S> + 'a>(
     pieces: &mut Vec<Piece<S>>,
     overlapping: impl Iterator<Item = (u32, &'a W, &'a Provenance<S>)>,
     (w, my_kept): (&Wedge<S>, &Provenance<S>),
-    (length, mesh): (&S, Option<&TriMesh>),
+    (length, congruence): (&S, Option<(&TriMesh, &CongruentPaths<S>)>),
 ) {
     let mine = w.distance_function();
     let mut cursor = w.b0.clone();
@@ -465,7 +471,7 @@ pub(crate) fn cut_into_pieces<'a, S: Scalar, W: WedgeFields<S> + 'a>(
         let kept = [old_kept, my_kept];
         let known = known_at_ends([&lo, &hi], &owns, kept, [&theirs, &mine], &vertices);
         let lower = lower_by_anchor((old, old_kept, id), (w, my_kept), &vertices);
-        let seen = seen_straight(mesh, old_kept, my_kept);
+        let seen = || seen_straight(congruence, old_kept, my_kept);
         // Whose own range end `lo` and `hi` are, the existing wedge's first.
         let end_of = [0, 1].map(|i| {
             let [old_owns, new_owns] = owns[i];

@@ -23,7 +23,9 @@
 //! key of the image that casts it (see `provenance.rs`). A segment's faces in one flat region
 //! are described by the run through them, by where it came in (see `region_runs.rs`): paths
 //! that cross a region by other faces, or cross the line between two regions at other edges,
-//! have one key. Kept only by number types that keep
+//! have one key; so do chains that pass a vertex of angle sum exactly 2 pi off every region (on
+//! a straight crease between two) on either side, once each goes round it the short way
+//! ([`CongruentPaths::round_the_short_way`]). Kept only by number types that keep
 //! values, on meshes where a chain of faces fixes its strip: every source a vertex, and no
 //! degenerate faces or edges with more than two faces.
 
@@ -34,7 +36,7 @@ use super::source::SurfacePoint;
 use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
 use crate::scalar::exact::squared_distance;
 use crate::scalar::Scalar;
-use std::cell::RefCell;
+use std::cell::{OnceCell, RefCell};
 use std::collections::HashMap;
 use std::sync::Arc;
 
@@ -98,15 +100,35 @@ impl Path {
         self.then(Step::Vertex(v.0))
     }
 
+    /// Whether two handles name one path: one link, not merely equal steps.
+    pub(crate) fn is(&self, other: &Path) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+
+    /// The path up to the vertex it last passed (the pseudo-source of its last segment).
+    fn to_pseudo_source(&self) -> &Path {
+        let mut at = self;
+        while let (Step::Face(_) | Step::Edge(_), Some(before)) = (at.0.step, &at.0.before) {
+            at = before;
+        }
+        at
+    }
+
     /// Where this path, a vertex's wedge's, starts at a vertex that the image of `lit` (the
     /// path of a wedge on the same edge) saw straight: the vertex reached across a face by
     /// that wedge's lineage, and `lit` the path of the wedge that crossed the face, or of a
     /// descendant carried on across faces around the vertex (unfolding about edges through the
     /// vertex keeps it where the image saw it). A vertex keeps the path of the distance it
-    /// keeps, so its distance is that image's distance function at it. `Some(opposite)`:
-    /// whether the two wedges came to their edge across different faces (their images on
-    /// opposite sides of its line).
-    pub(crate) fn seen_straight_from(&self, mesh: &TriMesh, lit: &Path) -> Option<bool> {
+    /// keeps, so its distance is that image's distance function at it. `same` tells whether
+    /// two paths of that lineage unfold one image ([`Path::is`], or
+    /// [`CongruentPaths::same_image`]). `Some(opposite)`: whether the two wedges came to their
+    /// edge across different faces (their images on opposite sides of its line).
+    pub(crate) fn seen_straight_from(
+        &self,
+        mesh: &TriMesh,
+        lit: &Path,
+        same: impl Fn(&Path, &Path) -> bool,
+    ) -> Option<bool> {
         let (Step::Face(back), Some(Path(at))) = (self.0.step, &self.0.before) else {
             return None;
         };
@@ -120,19 +142,14 @@ impl Path {
             return None;
         };
         let opposite = last != back;
-        if reached
-            .0
-            .before
-            .as_ref()
-            .is_some_and(|p| Arc::ptr_eq(&p.0, &lit.0))
-        {
+        if reached.0.before.as_ref().is_some_and(|p| same(p, lit)) {
             return Some(opposite);
         }
         let around = |f: u32| mesh.face(FaceId(f)).contains(&VertexId(v));
         let mut at = lit;
         // A fan around a vertex has as many faces as the vertex.
         for _ in 0..=mesh.vertex_faces(VertexId(v)).len() {
-            if Arc::ptr_eq(&at.0, &reached.0) {
+            if same(at, reached) {
                 return Some(opposite);
             }
             match (at.0.step, &at.0.before) {
@@ -189,6 +206,9 @@ pub(crate) struct CongruentPaths<S> {
     /// The mesh's flat regions, where it has some: a strip's faces in one region are
     /// described by the run through them (see `region_runs.rs`).
     regions: Option<RefCell<RegionRuns>>,
+    /// Whether each vertex is an interior vertex of angle sum exactly 2 pi, asked when a strip
+    /// turns about it (see [`CongruentPaths::round_the_short_way`]).
+    developable: Vec<OnceCell<bool>>,
 }
 
 /// A vertex distance measured in a flat region: the image in the region's frame, the sigma
@@ -227,6 +247,7 @@ impl<S: Scalar> CongruentPaths<S> {
             image_keys: HashMap::new(),
             images: HashMap::new(),
             regions: None,
+            developable: vec![OnceCell::new(); mesh.vertex_count()],
         })
     }
 
@@ -313,6 +334,34 @@ impl<S: Scalar> CongruentPaths<S> {
         self.images.entry(key).or_insert(at).clone()
     }
 
+    /// Whether two paths that end across one face unfold one image of one pseudo-source
+    /// there, however they were built: one path (one link) to the pseudo-source they last
+    /// passed, or one source vertex, so one distance there; and strips since then to each
+    /// corner of the face of one description, so the image's distances from the three corners
+    /// agree. Paths through a flat region by other faces unfold the region alike.
+    pub(crate) fn same_image(&self, mesh: &TriMesh, a: &Path, b: &Path) -> bool {
+        if a.is(b) {
+            return true;
+        }
+        let (Step::Face(f), Step::Face(g)) = (a.0.step, b.0.step) else {
+            return false;
+        };
+        let (p, q) = (a.to_pseudo_source(), b.to_pseudo_source());
+        let one_source = p.0.before.is_none() && q.0.before.is_none() && p.0.step == q.0.step;
+        if f != g || !(p.is(q) || one_source) {
+            return false;
+        }
+        let (a, b) = (a.last_segment(), b.last_segment());
+        mesh.face(FaceId(f)).iter().all(|c| {
+            let to = |steps: &[Step]| {
+                let mut to = steps.to_vec();
+                to.push(Step::Vertex(c.0));
+                self.segment(mesh, &to)
+            };
+            to(&a).is_some_and(|d| to(&b) == Some(d))
+        })
+    }
+
     /// The descriptions of the path's segments, sorted and joined.
     pub(crate) fn key(&self, mesh: &TriMesh, path: &Path) -> Option<Vec<u32>> {
         let steps = path.steps();
@@ -349,13 +398,14 @@ impl<S: Scalar> CongruentPaths<S> {
         if let [Step::Edge(_)] = middle {
             return Some(vec![self.class(mesh, s, v)?]);
         }
-        let faces: Vec<FaceId> = middle
+        let mut faces: Vec<FaceId> = middle
             .iter()
             .map(|step| match step {
                 Step::Face(f) => Some(FaceId(*f)),
                 _ => None,
             })
             .collect::<Option<_>>()?;
+        self.round_the_short_way(mesh, &mut faces, [s, v]);
         // The segment ends at the copy of its end that the last faces turn about: in the first
         // of the run of faces at the chain's end that have it as a corner (an earlier face
         // with that corner, before the chain left it, unfolds another copy of it).
@@ -383,6 +433,45 @@ impl<S: Scalar> CongruentPaths<S> {
             .collect::<Option<Vec<_>>>()?
             .into_iter()
             .min()
+    }
+
+    /// Rewrites a chain of faces so that where it turns about a vertex of angle sum exactly
+    /// 2 pi (exactly flat, or on a straight crease), other than its ends, it goes the short way
+    /// round (of two ways of one length, the one of lesser face ids): about such a vertex the
+    /// faces unfold into a whole disc, so both ways lay the faces after the turn out alike,
+    /// and two chains that pass it on either side describe one strip. A vertex on a crease
+    /// lies in two planes, in no flat region, so this is not the runs' description
+    /// (`region_runs.rs`).
+    fn round_the_short_way(&self, mesh: &TriMesh, faces: &mut Vec<FaceId>, ends: [VertexId; 2]) {
+        let developable = |c: VertexId| {
+            *self.developable[c.index()].get_or_init(|| {
+                !mesh.is_boundary_vertex(c) && (mesh.is_flat_vertex(c) || mesh.is_crease_vertex(c))
+            })
+        };
+        let mut i = 0;
+        // Each rewrite makes the chain shorter, or as long and of lesser ids from `i` on; it
+        // may open a turn that starts before `i`, so the scan starts again.
+        while i + 2 < faces.len() {
+            let rewritten = mesh.face(faces[i]).into_iter().find_map(|c| {
+                let turn = faces[i..]
+                    .iter()
+                    .take_while(|&&f| mesh.face(f).contains(&c))
+                    .count();
+                if turn < 3 || ends.contains(&c) || !developable(c) {
+                    return None;
+                }
+                let way = other_way_round(mesh, c, &faces[i..i + turn])?;
+                let shorter = (way.len(), &way[..]) < (turn, &faces[i..i + turn]);
+                shorter.then_some((turn, way))
+            });
+            match rewritten {
+                Some((turn, way)) => {
+                    faces.splice(i..i + turn, way);
+                    i = 0;
+                }
+                None => i += 1,
+            }
+        }
     }
 
     /// A strip's description from `from` through `chain` (at least two faces) to `to`: the
@@ -557,6 +646,35 @@ impl Turn {
     }
 }
 
+/// The faces about the interior vertex `c` from the first face of `turn` (consecutive faces
+/// around `c`) to its last, the other way round; `None` where the faces about `c` do not close
+/// into one fan.
+fn other_way_round(mesh: &TriMesh, c: VertexId, turn: &[FaceId]) -> Option<Vec<FaceId>> {
+    let (&first, &last) = (turn.first()?, turn.last()?);
+    let fan = mesh.vertex_faces(c).len();
+    let mut way = vec![first];
+    let (mut previous, mut at) = (turn[1], first);
+    while at != last {
+        if way.len() > fan {
+            return None;
+        }
+        // The face beyond `at`'s side through `c` that does not lead back.
+        let next = mesh
+            .face(at)
+            .into_iter()
+            .filter(|&u| u != c)
+            .find_map(|u| {
+                let side = mesh.edge_between(c, u)?;
+                let mut beyond = mesh.edge_faces(side).filter(|&g| g != at);
+                let g = beyond.next()?;
+                (beyond.next().is_none() && g != previous).then_some(g)
+            })?;
+        (previous, at) = (at, next);
+        way.push(at);
+    }
+    Some(way)
+}
+
 /// A kept path continued by `step`; nothing where no path is kept.
 pub(crate) fn continued<S: Scalar>(
     path: &S::Kept<Path>,
@@ -588,16 +706,95 @@ mod tests {
         let lit = parent.across(fan[0]);
         let vertex = lit.to(VertexId(0));
         let back = vertex.across(fan[0]);
-        assert_eq!(back.seen_straight_from(&mesh, &parent), Some(true));
-        assert_eq!(back.seen_straight_from(&mesh, &lit), Some(false));
+        assert_eq!(
+            back.seen_straight_from(&mesh, &parent, Path::is),
+            Some(true)
+        );
+        assert_eq!(back.seen_straight_from(&mesh, &lit, Path::is), Some(false));
         let around = vertex.across(fan[2]);
         let carried = lit.across(fan[1]).across(fan[2]);
-        assert_eq!(around.seen_straight_from(&mesh, &carried), Some(false));
-        assert_eq!(back.seen_straight_from(&mesh, &carried), Some(true));
+        assert_eq!(
+            around.seen_straight_from(&mesh, &carried, Path::is),
+            Some(false)
+        );
+        assert_eq!(
+            back.seen_straight_from(&mesh, &carried, Path::is),
+            Some(true)
+        );
         let alike = Path::at_source(VertexId(9)).across(off).across(fan[0]);
-        assert_eq!(back.seen_straight_from(&mesh, &alike), None);
-        assert_eq!(around.seen_straight_from(&mesh, &lit.across(off)), None);
-        assert_eq!(lit.across(fan[1]).seen_straight_from(&mesh, &lit), None);
+        assert_eq!(back.seen_straight_from(&mesh, &alike, Path::is), None);
+        assert_eq!(
+            around.seen_straight_from(&mesh, &lit.across(off), Path::is),
+            None
+        );
+        assert_eq!(
+            lit.across(fan[1]).seen_straight_from(&mesh, &lit, Path::is),
+            None
+        );
+    }
+
+    /// A 4 x 3 grid folded along the line x = 0 (flat on the left, rising on the right), its
+    /// cells split so that the eight faces 0..8 turn about the vertex 5 at (0, 0) in that
+    /// order; faces 8..12 fill the column on the right. `lift` raises the vertex 9 at (0, 1)
+    /// off the fold line: 5 is then no longer on a straight crease.
+    fn folded_grid(lift: f64) -> TriMesh {
+        let mut positions = Vec::new();
+        for y in -1..=1 {
+            for x in -1..=2 {
+                let (x, y) = (f64::from(x), f64::from(y));
+                positions.push([x, y, 0.5 * x.max(0.0)]);
+            }
+        }
+        positions[9][2] = lift;
+        let fan = [[5, 6, 10], [5, 10, 9], [5, 9, 8], [5, 8, 4]];
+        let fan_below = [[5, 4, 0], [5, 0, 1], [5, 1, 2], [5, 2, 6]];
+        let right = [[2, 3, 7], [2, 7, 6], [6, 7, 11], [6, 11, 10]];
+        let faces = [fan, fan_below, right].concat();
+        TriMesh::new(positions, faces).expect("a mesh")
+    }
+
+    /// About a vertex of angle sum 2 pi on a straight crease, a chain of faces is rewritten
+    /// to go the short way round (of two ways of one length, the one of lesser face ids), and
+    /// two paths that pass it on either side unfold one image; about the same vertex off a
+    /// straight crease, nothing is rewritten.
+    #[test]
+    fn a_turn_about_a_vertex_on_a_straight_crease_goes_the_short_way() {
+        let ids = |faces: &[u32]| faces.iter().map(|&f| FaceId(f)).collect::<Vec<_>>();
+        let ends = [VertexId(3), VertexId(9)];
+        let rewritten = |mesh: &TriMesh, faces: &[u32]| {
+            let table = CongruentPaths::<f64>::new(mesh, &[SurfacePoint::Vertex(ends[0])])
+                .expect("a mesh whose chains fix their strips");
+            let mut chain = ids(faces);
+            table.round_the_short_way(mesh, &mut chain, ends);
+            (table, chain)
+        };
+        let folded = folded_grid(0.0);
+        assert!(folded.is_crease_vertex(VertexId(5)));
+        let long = [7, 6, 5, 4, 3, 2];
+        assert_eq!(rewritten(&folded, &long).1, ids(&[7, 0, 1, 2]));
+        assert_eq!(
+            rewritten(&folded, &[7, 6, 5, 4, 3]).1,
+            ids(&[7, 0, 1, 2, 3])
+        );
+        assert_eq!(
+            rewritten(&folded, &[7, 0, 1, 2, 3]).1,
+            ids(&[7, 0, 1, 2, 3])
+        );
+        // From vertex 3 on the right across faces 8 and 9 to face 7, then round to face 2.
+        let path = |faces: &[u32]| {
+            [8, 9]
+                .iter()
+                .chain(faces)
+                .fold(Path::at_source(ends[0]), |p, &f| p.across(FaceId(f)))
+        };
+        let (table, _) = rewritten(&folded, &[]);
+        assert!(table.same_image(&folded, &path(&long), &path(&[7, 0, 1, 2])));
+        assert!(!table.same_image(&folded, &path(&long), &path(&[7, 0, 1])));
+        let bent = folded_grid(0.25);
+        assert!(!bent.is_crease_vertex(VertexId(5)));
+        assert_eq!(rewritten(&bent, &long).1, ids(&long));
+        let (table, _) = rewritten(&bent, &[]);
+        assert!(!table.same_image(&bent, &path(&long), &path(&[7, 0, 1, 2])));
     }
 
     /// The paths from a corner of each face across its edge to the far corner of the face

@@ -262,6 +262,7 @@ struct Reach<'a, S: Scalar> {
     unfolding: &'a Unfolding<S>,
     sources: &'a [SurfacePoint],
     front: &'a mut Front<S>,
+    paths: Option<&'a CongruentPaths<S>>,
 }
 
 impl<S: Scalar> Arrivals<S> for Reach<'_, S> {
@@ -275,8 +276,8 @@ impl<S: Scalar> Arrivals<S> for Reach<'_, S> {
         self.front.offer_vertex(surface, v, (d, path), w);
     }
 
-    fn mesh(&self) -> Option<&TriMesh> {
-        Some(self.mesh)
+    fn congruence(&self) -> Option<(&TriMesh, &CongruentPaths<S>)> {
+        Some((self.mesh, self.paths?))
     }
 }
 
@@ -439,6 +440,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             unfolding: &self.unfolding,
             sources: &self.sources,
             front: &mut self.front,
+            paths: self.paths.as_ref(),
         };
         let run = (&mut reach, self.offered.as_mut());
         self.wedges.insert((w, kept), edge, &mut self.stats, run);

@@ -9,6 +9,7 @@
 
 use super::edge_wedges::EdgeWedges;
 use super::intersect::{cut_into_pieces, Owner, Piece};
+use super::paths::CongruentPaths;
 use super::provenance::{compare_ends, keeps_values, one_end, range_end, Provenance, RangeEnd};
 use super::stats::Stats;
 use super::strips::OfferedWedges;
@@ -166,8 +167,9 @@ pub(crate) trait Arrivals<S: Scalar> {
     /// A wedge, with what it keeps of its construction, reaches the vertex `v` of its
     /// edge at distance `d`.
     fn reach(&mut self, v: VertexId, d: S, wedge: (&Wedge<S>, &Provenance<S>));
-    /// The mesh, where the wedges' paths are read against it.
-    fn mesh(&self) -> Option<&TriMesh> {
+    /// The mesh and the run's table of congruent paths, where the wedges' paths are read
+    /// against them.
+    fn congruence(&self) -> Option<(&TriMesh, &CongruentPaths<S>)> {
         None
     }
 }
@@ -367,7 +369,7 @@ impl<S: Scalar> WedgeLists<S> {
         // An overlapped wedge is named by its place among the overlapped ones.
         let overlapping = (0..).zip(&list[first..end]).map(|(k, x)| (k, x, &x.kept));
         let new = (&w, &kept);
-        let edge = (length, arrivals.mesh());
+        let edge = (length, arrivals.congruence());
         cut_into_pieces(&mut stats.eq2, log, &mut pieces, overlapping, new, edge);
         if pieces.iter().any(|p| p.owner == Owner::NEW) {
             let edge = (length, ends);
