@@ -449,28 +449,39 @@ impl<S: Scalar> CongruentPaths<S> {
             })
         };
         let mut i = 0;
-        // Each rewrite makes the chain shorter, or as long and of lesser ids from `i` on; it
-        // may open a turn that starts before `i`, so the scan starts again.
+        // Each rewrite makes the chain shorter, or as long and of lesser ids from `i` on.
         while i + 2 < faces.len() {
             let rewritten = mesh.face(faces[i]).into_iter().find_map(|c| {
+                if ends.contains(&c) || !developable(c) {
+                    return None;
+                }
                 let turn = faces[i..]
                     .iter()
                     .take_while(|&&f| mesh.face(f).contains(&c))
                     .count();
-                if turn < 3 || ends.contains(&c) || !developable(c) {
+                if turn < 3 {
                     return None;
                 }
                 let way = other_way_round(mesh, c, &faces[i..i + turn])?;
                 let shorter = (way.len(), &way[..]) < (turn, &faces[i..i + turn]);
                 shorter.then_some((turn, way))
             });
-            match rewritten {
-                Some((turn, way)) => {
-                    faces.splice(i..i + turn, way);
-                    i = 0;
-                }
-                None => i += 1,
-            }
+            let Some((turn, way)) = rewritten else {
+                i += 1;
+                continue;
+            };
+            faces.splice(i..i + turn, way);
+            // The face at `i` stays; a turn that reaches it, about one of its corners, may
+            // now go on differently: the scan goes back to the first such turn's start.
+            i = mesh
+                .face(faces[i])
+                .into_iter()
+                .map(|c| {
+                    let before = faces[..i].iter().rev();
+                    i - before.take_while(|&&f| mesh.face(f).contains(&c)).count()
+                })
+                .min()
+                .unwrap_or(i);
         }
     }
 
