@@ -388,6 +388,20 @@ fn a_foot_at_a_range_end_is_no_decision() {
     assert_certified_and_bounded("parametric_torus.obj", &[275]);
 }
 
+/// pyvista's parametric torus, 50 by 30 (`tests/data/pyvista_surfaces.py`, float32
+/// coordinates). From v480, the geodesics to the saddles v1146 and v1175 run along the
+/// meridian's edges in a mirror plane: the straight line from pseudo-source v798 passes the
+/// saddle v1117 and goes on along edge (v1117, v1146). Measured as one straight line from v798's
+/// image (through 20 faces) and as v1117's distance plus the edge, the two lengths are equal
+/// by that collinearity, which no normal form of the deep image reached: a wedge whose range
+/// reaches a vertex that acts as a pseudo-source, and whose ray through it passes the apex,
+/// gives the apex the vertex's distance and the edge on from it, as the vertex's own wedges
+/// do. The previous build left 15 decisions uncertified.
+#[test]
+fn a_geodesic_along_edges_through_a_saddle_is_measured_from_the_saddle() {
+    assert_certified_and_bounded("parametric_torus_50_30.obj", &[480]);
+}
+
 /// pyvista's superquadric (`tests/data/pyvista_surfaces.py`, float32 coordinates): its vertices
 /// are symmetric under the half turn about the x axis, which swaps its poles, but for two
 /// meridians that a rounded cosine puts 2e-6 off the plane z = 0 (on the same side of it at both

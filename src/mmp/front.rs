@@ -207,12 +207,7 @@ impl<S: Scalar> Front<S> {
             source,
             path,
         });
-        // A vertex on a straight crease bends no geodesic (its angle sum is exactly 2 pi);
-        // number types that keep values prove the ties of the images passing it on either
-        // side by structure (`crease.rs`) rather than meeting its own wedges there. Rounding
-        // types keep it as a pseudo-source, which covers the shadow line behind it whatever
-        // the images' rounding.
-        if mesh.may_bend_geodesics(v) && !(keeps_values::<S>() && mesh.is_crease_vertex(v)) {
+        if acts_as_pseudo_source::<S>(mesh, v) {
             self.pending_emission[v.index()] = true;
             self.queue.push(Event::new(approx, EventKind::Vertex(v)));
         }
@@ -252,6 +247,15 @@ impl<S: Scalar> Front<S> {
         }
         vertices
     }
+}
+
+/// Whether vertex `v`, once reached, sends wedges of its own as a pseudo-source. A vertex on a
+/// straight crease bends no geodesic (its angle sum is exactly 2 pi); number types that keep
+/// values prove the ties of the images passing it on either side by structure (`crease.rs`)
+/// rather than meeting its own wedges there. Rounding types keep it as a pseudo-source, which
+/// covers the shadow line behind it whatever the images' rounding.
+pub(crate) fn acts_as_pseudo_source<S: Scalar>(mesh: &TriMesh, v: VertexId) -> bool {
+    mesh.may_bend_geodesics(v) && !(keeps_values::<S>() && mesh.is_crease_vertex(v))
 }
 
 #[cfg(test)]

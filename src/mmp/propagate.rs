@@ -6,7 +6,7 @@
 
 use super::field::GeodesicField;
 use super::flat_region::RegionImage;
-use super::front::{EventKind, Front};
+use super::front::{acts_as_pseudo_source, EventKind, Front};
 use super::paths::{continued, CongruentPaths, Path};
 use super::planar::Planar;
 use super::provenance::{keeps_values, Anchor, Light, Provenance};
@@ -744,7 +744,47 @@ impl<'m, S: Scalar> Engine<'m, S> {
             layout.ray_side(from(0), &w.b0),
             layout.ray_side(from(1), &w.b1),
         );
+        // A range end at an end of the edge is that vertex, which lies on the near edge at
+        // t = 0 (v0) or on the far edge at u = 1 (v1): exactly there, not at a constructed
+        // quotient equal to it that an exact backend would have to prove equal.
+        let at_v = [
+            w.b0.sign() == Sign::Zero,
+            w.b1.compare(length) == Ordering::Equal,
+        ];
+        // A range that reaches a vertex of the edge acting as a pseudo-source, with the ray
+        // through that vertex passing the apex: the geodesic to the apex goes on straight from
+        // the vertex along the face's edge between them, and its length is the vertex's
+        // distance and that edge, the expression the vertex's own wedges give the apex (the
+        // same path); not one straight line from the image, which no normal form relates to
+        // theirs on deep images (a torus's meridians run along its edges through saddles).
+        let (unfolding, paths) = (&self.unfolding, &mut self.paths);
+        let ends = unfolding.ends(mesh, w.edge);
+        let grazed = (0..2)
+            .find(|&i| {
+                keeps_values::<S>()
+                    && at_v[i]
+                    && [side0, side1][i] == Ordering::Equal
+                    && anchors[i].is_none()
+                    && acts_as_pseudo_source::<S>(mesh, ends[i])
+            })
+            .map(|i| {
+                let g = [layout.wing.near, layout.wing.far][i];
+                let at_vertex = || {
+                    let end = [S::zero(), length.clone()];
+                    S::kept(&kept.at_ends[i]).unwrap_or_else(|| w.distance_function().at(&end[i]))
+                };
+                // The vertex's distance as congruent paths to it have it.
+                let to_vertex = continued::<S>(&kept.path, |p| p.to(ends[i]));
+                let d = match (paths.as_mut(), S::kept(&to_vertex)) {
+                    (Some(paths), Some(p)) => paths.length(mesh, &p, at_vertex),
+                    _ => at_vertex(),
+                };
+                (d + unfolding.length(g), ends[i], g)
+            });
         let apex_distance = || {
+            if let Some((d, _, _)) = &grazed {
+                return d.clone();
+            }
             let straight = match (flat, &image) {
                 (Some((regions, _)), Some(image)) => {
                     regions.distance(mesh, image, layout.apex_vertex())
@@ -756,10 +796,18 @@ impl<'m, S: Scalar> Engine<'m, S> {
         // The distance at the apex is the length of the wedge's path on across the face; one
         // expression for congruent paths where the run keeps paths.
         let path = continued::<S>(&kept.path, |p| p.across(face));
-        let apex_path = continued::<S>(&path, |p| p.to(layout.apex_vertex()));
+        let apex_path = match &grazed {
+            Some((_, vertex, g)) => continued::<S>(&kept.path, |p| {
+                p.to(*vertex).along(*g).to(layout.apex_vertex())
+            }),
+            None => continued::<S>(&path, |p| p.to(layout.apex_vertex())),
+        };
         let paths = &mut self.paths;
         let at_apex = S::keep(
             || match (paths.as_mut(), S::kept(&apex_path), flat, &image) {
+                (Some(paths), Some(p), _, _) if grazed.is_some() => {
+                    paths.length(mesh, &p, apex_distance)
+                }
                 (Some(paths), Some(p), Some((_, region)), Some(image)) => {
                     let from = (region, layout.apex_vertex(), &image.point, &w.sigma);
                     paths.length_from(mesh, &p, from, apex_distance)
@@ -768,18 +816,11 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 _ => apex_distance(),
             },
         );
-        // A range end at an end of the edge is that vertex, which lies on the near edge at
-        // t = 0 (v0) or on the far edge at u = 1 (v1): exactly there, not at a constructed
-        // quotient equal to it that an exact backend would have to prove equal.
-        let (at_v0, at_v1) = (
-            w.b0.sign() == Sign::Zero,
-            w.b1.compare(length) == Ordering::Equal,
-        );
+        let [at_v0, at_v1] = at_v;
         // In a flat region, the apex whose shadow is a vertex of the edge (the image, that
         // vertex and the apex on one line, as vertices along a straight feature of a CAD model
         // are) is known by the orientation of the three points in the region's frame, not by
         // comparing a constructed shadow with the range's end.
-        let ends = self.unfolding.ends(mesh, w.edge);
         let shadow_at_vertex = |i: usize| match (flat, &image) {
             (Some((regions, region)), Some(image)) => {
                 let p = &image.point;

@@ -1,6 +1,7 @@
 """Writes the pyvista surfaces of tests/exact_certified.rs, each triangulated and cleaned, its
 float32 coordinates written exactly: parametric_torus.obj (ParametricTorus, ring radius 1,
-tube radius 0.5, sampled 30 by 20), superquadric.obj (Superquadric, theta roundness 0.3, phi
+tube radius 0.5, sampled 30 by 20), parametric_torus_50_30.obj (the same, 50 by 30),
+superquadric.obj (Superquadric, theta roundness 0.3, phi
 roundness 0.7, its default resolutions) and bour_surface.obj (ParametricBour, Bour's minimal
 surface, sampled 12 by 12). Needs pyvista."""
 import pyvista as pv
@@ -16,5 +17,6 @@ def write(mesh, name):
 
 
 write(pv.ParametricTorus(u_res=30, v_res=20, w_res=20), "parametric_torus.obj")
+write(pv.ParametricTorus(u_res=50, v_res=30, w_res=30), "parametric_torus_50_30.obj")
 write(pv.Superquadric(theta_roundness=0.3, phi_roundness=0.7), "superquadric.obj")
 write(pv.ParametricBour(u_res=12, v_res=12, w_res=10), "bour_surface.obj")
