@@ -627,7 +627,7 @@ fn a_cad_model_s_walls_below_straight_rims_are_certified() {
     assert_certified_and_agrees_with_f64(&mesh, SurfacePoint::Vertex(VertexId(0)), "cad v0");
 }
 
-/// fandisk.obj of the shared models (12,946 faces; skipped where absent, about 2 minutes
+/// fandisk.obj of the shared models (12,946 faces; skipped where absent, about 4 to 5 minutes
 /// where present): its rims are straight creases subdivided into collinear vertices, which
 /// exact runs do not make pseudo-sources (their angle sums are exactly 2 pi). Their own wedges
 /// met the images passing them in tangencies no normal form proved: 11 decisions uncertified
