@@ -1,9 +1,9 @@
 """Writes the pyvista surfaces of tests/exact_certified.rs, each triangulated and cleaned, its
 float32 coordinates written exactly: parametric_torus.obj (ParametricTorus, ring radius 1,
 tube radius 0.5, sampled 30 by 20), parametric_torus_50_30.obj (the same, 50 by 30),
-superquadric.obj (Superquadric, theta roundness 0.3, phi
-roundness 0.7, its default resolutions) and bour_surface.obj (ParametricBour, Bour's minimal
-surface, sampled 12 by 12). Needs pyvista."""
+superquadric.obj (Superquadric, theta roundness 0.3, phi roundness 0.7, its default
+resolutions) and bour_surface.obj (ParametricBour, Bour's minimal surface, sampled 12 by 12).
+Needs pyvista."""
 import pyvista as pv
 
 
