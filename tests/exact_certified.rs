@@ -498,6 +498,17 @@ fn radicals_sharing_large_factors_are_compared_over_a_coprime_basis() {
     assert_certified_and_bounded("subdivided_octahedron_512.obj", &[0, 1]);
 }
 
+/// The same octahedron from v129: the path to pseudo-source v223 turns about a flat vertex of
+/// the face next to the source, and the other way round that vertex (the one of lesser face
+/// ids, which a chain's description takes) passes a second face of the source, where no chain
+/// from the source goes: the path had no description, v223's wedges no strip, and their
+/// crossing with the source's wedge no name, so the mirror images of that crossing met as
+/// arithmetic. The previous build left 2 decisions uncertified.
+#[test]
+fn a_chain_from_a_vertex_is_not_rewritten_past_that_vertex_again() {
+    assert_certified_and_bounded("subdivided_octahedron_512.obj", &[129]);
+}
+
 /// The icosahedron split into 320 faces, its coordinates written to 8 decimals (`tests/data/
 /// subdivided_solids.py`). Mirror twins reach an edge through long chains of nearly flat
 /// faces: their normal forms outgrow what a sign is asked to spend, and the last resort of a

@@ -463,6 +463,16 @@ impl<S: Scalar> CongruentPaths<S> {
                     return None;
                 }
                 let way = other_way_round(mesh, c, &faces[i..i + turn])?;
+                // A chain from a vertex never comes back to it (`segment` has no description
+                // for one that does): the other way past a face of the start is no chain.
+                let fresh = |f: &&FaceId| !faces[i..i + turn].contains(f);
+                if way
+                    .iter()
+                    .filter(fresh)
+                    .any(|&f| mesh.face(f).contains(&ends[0]))
+                {
+                    return None;
+                }
                 let shorter = (way.len(), &way[..]) < (turn, &faces[i..i + turn]);
                 shorter.then_some((turn, way))
             });
@@ -806,6 +816,30 @@ mod tests {
         assert_eq!(rewritten(&bent, &long).1, ids(&long));
         let (table, _) = rewritten(&bent, &[]);
         assert!(!table.same_image(&bent, &path(&long), &path(&[7, 0, 1, 2])));
+    }
+
+    /// A chain from vertex 4 turning about vertex 5 through faces 4, 5, 6, 7 to 0 is not
+    /// rewritten the other way round (faces 4, 3, 2, 1, 0: as long, of lesser ids), which
+    /// passes face 3, a second face of vertex 4; the chain keeps a key. From vertex 0, which
+    /// the other way does not pass, the same turn is rewritten.
+    #[test]
+    fn a_turn_is_not_rewritten_past_the_start_again() {
+        let ids = |faces: &[u32]| faces.iter().map(|&f| FaceId(f)).collect::<Vec<_>>();
+        let mesh = folded_grid(0.0);
+        let [start, end] = [VertexId(4), VertexId(10)];
+        let table = CongruentPaths::<f64>::new(&mesh, &[SurfacePoint::Vertex(start)])
+            .expect("a mesh whose chains fix their strips");
+        let mut chain = ids(&[4, 5, 6, 7, 0]);
+        table.round_the_short_way(&mesh, &mut chain, [start, end]);
+        assert_eq!(chain, ids(&[4, 5, 6, 7, 0]));
+        let path = [4, 5, 6, 7, 0]
+            .iter()
+            .fold(Path::at_source(start), |p, &f| p.across(FaceId(f)))
+            .to(end);
+        assert!(table.key(&mesh, &path).is_some());
+        let mut chain = ids(&[4, 5, 6, 7, 0]);
+        table.round_the_short_way(&mesh, &mut chain, [VertexId(0), end]);
+        assert_eq!(chain, ids(&[4, 3, 2, 1, 0]));
     }
 
     /// The paths from a corner of each face across its edge to the far corner of the face
