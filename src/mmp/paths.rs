@@ -439,9 +439,10 @@ impl<S: Scalar> CongruentPaths<S> {
     /// 2 pi (exactly flat, or on a straight crease), other than its ends, it goes the short way
     /// round (of two ways of one length, the one of lesser face ids): about such a vertex the
     /// faces unfold into a whole disc, so both ways lay the faces after the turn out alike,
-    /// and two chains that pass it on either side describe one strip. A vertex on a crease
-    /// lies in two planes, in no flat region, so this is not the runs' description
-    /// (`region_runs.rs`).
+    /// and two chains that pass it on either side describe one strip. Not where the other way
+    /// passes another face of the chain's start: no chain from the start goes there, and
+    /// [`segment`](Self::segment) describes none that does. A vertex on a crease lies in two
+    /// planes, in no flat region, so this is not the runs' description (`region_runs.rs`).
     fn round_the_short_way(&self, mesh: &TriMesh, faces: &mut Vec<FaceId>, ends: [VertexId; 2]) {
         let developable = |c: VertexId| {
             *self.developable[c.index()].get_or_init(|| {
@@ -463,8 +464,7 @@ impl<S: Scalar> CongruentPaths<S> {
                     return None;
                 }
                 let way = other_way_round(mesh, c, &faces[i..i + turn])?;
-                // A chain from a vertex never comes back to it (`segment` has no description
-                // for one that does): the other way past a face of the start is no chain.
+                // The turn's own faces may hold the start (the chain's first face does).
                 let fresh = |f: &&FaceId| !faces[i..i + turn].contains(f);
                 if way
                     .iter()
