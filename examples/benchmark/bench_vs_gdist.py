@@ -9,6 +9,9 @@ source vertex, this runs fresh processes, taking turns --repeats times:
    ``gdist.compute_gdist`` call, timed inside the worker;
 2. ``exact-geodesics distance MODEL --source v:S --format csv``: the distance
    of every vertex, compared with gdist's;
+3. where ``build_kirsanov.sh`` built it (or ``--kirsanov-driver PATH``), the
+   plain C++ driver around the same code as gdist's (``kirsanov_driver.cpp``):
+   the whole process, timed as ours is (the targets compare whole processes);
 
 then once ``exact-geodesics stats MODEL --source v:S``: a JSON object whose
 ``propagation_seconds``, ``wedges``, ``wedges_per_edge`` and
@@ -53,6 +56,7 @@ DEFAULT_MODELS_DIR = REPO.parent / "shared" / "models"
 DEFAULT_BINARY = REPO / "target" / "release" / "exact-geodesics"
 DEFAULT_VENV_PYTHON = REPO / ".venv" / "bin" / "python"
 DEFAULT_OUT = REPO / "bench-results"
+DEFAULT_KIRSANOV = DEFAULT_OUT / "kirsanov" / "kirsanov_driver"
 MIB = 1024 * 1024
 
 # Columns of benchmark.csv, in order; every per-model result has these keys.
@@ -89,6 +93,13 @@ CSV_COLUMNS = [
     "max_abs_diff",
     "max_abs_diff_vertex",
     "max_rel_diff",
+    "kirsanov_process_wall_seconds",
+    "kirsanov_process_cpu_seconds",
+    "kirsanov_peak_rss_bytes",
+    "ratio_ours_wall_over_kirsanov",
+    "ratio_ours_rss_over_kirsanov",
+    "kirsanov_reached",
+    "kirsanov_max_abs_diff",
     "errors",
 ]
 
@@ -204,6 +215,14 @@ def run_ours_distance(mesh, args, raw_dir, name):
     return run.wall_seconds, run.peak_rss_bytes, csv_path
 
 
+def run_kirsanov(mesh, args, raw_dir, name):
+    """One run of the C++ driver: its wall and CPU time, peak RSS and the distances it wrote."""
+    distances_path = raw_dir / f"{name}.kirsanov.txt"
+    cmd = [str(args.kirsanov_driver), str(mesh), str(args.source)]
+    run = run_measured(cmd, distances_path, args.timeout)
+    return run, distances_path
+
+
 def in_fresh_process(function, *args):
     """``function(*args)`` in a fresh interpreter. On Linux a child's peak RSS includes its
     parent's high-water mark at the fork (it survives fork and exec), so whatever holds a
@@ -226,8 +245,8 @@ def benchmark_model(name, mesh, args, raw_dir):
     result dict (medians of the repeated runs)."""
     result = dict.fromkeys(CSV_COLUMNS)
     result.update(model=name, source=args.source, repeats=args.repeats, errors=[])
-    gdist_txt = ours_csv = None
-    gdist_reports, ours_runs = [], []
+    gdist_txt = ours_csv = kirsanov_txt = None
+    gdist_reports, ours_runs, kirsanov_runs = [], [], []
 
     for turn in range(1, args.repeats + 1):
         try:
@@ -244,6 +263,14 @@ def benchmark_model(name, mesh, args, raw_dir):
         except RunError as exc:
             result["errors"].append(f"ours distance: {exc}")
             log(f"  [{turn}] ours distance FAILED: {exc}")
+        if args.kirsanov_driver is not None:
+            try:
+                run, kirsanov_txt = run_kirsanov(mesh, args, raw_dir, name)
+                kirsanov_runs.append(run)
+                log(f"  [{turn}] kirsanov driver: {run.wall_seconds:.3f} s wall, {run.peak_rss_bytes / MIB:.1f} MiB")
+            except RunError as exc:
+                result["errors"].append(f"kirsanov driver: {exc}")
+                log(f"  [{turn}] kirsanov driver FAILED: {exc}")
 
     if gdist_reports:
         last = gdist_reports[-1]
@@ -268,8 +295,23 @@ def benchmark_model(name, mesh, args, raw_dir):
         )
         try:
             result.update(in_fresh_process(compare_outputs, ours_csv, gdist_txt, result["vertices"]))
+            if kirsanov_txt is not None:
+                against = in_fresh_process(compare_outputs, ours_csv, kirsanov_txt, result["vertices"])
+                result["kirsanov_reached"] = against["finite_in_both"] + against["finite_gdist_only"]
+                result["kirsanov_max_abs_diff"] = against["max_abs_diff"]
         except RunError as exc:
             result["errors"].append(f"ours distance: {exc}")
+    if kirsanov_runs:
+        result.update(
+            kirsanov_process_wall_seconds=median([r.wall_seconds for r in kirsanov_runs]),
+            kirsanov_process_cpu_seconds=median([r.user_seconds + r.system_seconds for r in kirsanov_runs]),
+            kirsanov_peak_rss_bytes=median([r.peak_rss_bytes for r in kirsanov_runs]),
+        )
+        if ours_runs:
+            result["ratio_ours_wall_over_kirsanov"] = (
+                result["ours_distance_wall_seconds"] / result["kirsanov_process_wall_seconds"])
+            result["ratio_ours_rss_over_kirsanov"] = (
+                result["ours_distance_peak_rss_bytes"] / result["kirsanov_peak_rss_bytes"])
 
     try:
         stats_path = raw_dir / f"{name}.ours-stats.json"
@@ -457,6 +499,10 @@ def format_table(results):
         ("ours only", lambda r: num(r["finite_ours_only"], "d")),
         ("gdist only", lambda r: num(r["finite_gdist_only"], "d")),
         ("ours wall s", lambda r: num(r["ours_distance_wall_seconds"], ".3f")),
+        ("kirsanov wall s", lambda r: num(r["kirsanov_process_wall_seconds"], ".3f")),
+        ("/kirsanov", lambda r: num(r["ratio_ours_wall_over_kirsanov"], ".2f")),
+        ("kirsanov MiB", lambda r: num(r["kirsanov_peak_rss_bytes"], ".1f", MIB)),
+        ("RSS /kirsanov", lambda r: num(r["ratio_ours_rss_over_kirsanov"], ".2f")),
     ]
     rows = [[title for title, _ in columns]]
     rows += [[cell(result) for _, cell in columns] for result in results]
@@ -496,7 +542,13 @@ def parse_args():
     parser.add_argument("--generated", type=lambda s: [m for m in s.split(",") if m],
                         default=["icosphere:6", "icosphere:7", "grid:300", "grid:1000"],
                         help="generated meshes, icosphere:L or grid:N, written to OUT/generated ('' for none)")
-    return parser.parse_args()
+    parser.add_argument("--kirsanov-driver", type=Path, default=None,
+                        help="the C++ driver built by build_kirsanov.sh, also timed in every turn "
+                             f"(default: {DEFAULT_KIRSANOV.relative_to(REPO)} where it exists)")
+    args = parser.parse_args()
+    if args.kirsanov_driver is None and DEFAULT_KIRSANOV.exists():
+        args.kirsanov_driver = DEFAULT_KIRSANOV
+    return args
 
 
 def main():
@@ -529,6 +581,7 @@ def main():
         "cpu_count": os.cpu_count(),
         "harness_python": platform.python_version(),
         "gdist_version": None,
+        "kirsanov_driver": None if args.kirsanov_driver is None else str(args.kirsanov_driver),
     }
     results = []
     for index, (name, mesh) in enumerate(models.items(), start=1):
