@@ -16,7 +16,7 @@
 #include "geodesic_algorithm_exact.h"
 
 // `v x y z` and `f a b c` lines (1-based, `a/t/n` forms allowed, negative indices from the
-// end); anything else is skipped. Polygons are refused: the benchmark's meshes are triangles.
+// end; an index of no vertex read so far is refused); anything else is skipped. Polygons are refused: the benchmark's meshes are triangles.
 static bool read_obj(const char *path, std::vector<double> &points, std::vector<unsigned> &faces) {
     std::ifstream in(path);
     if (!in) {
@@ -46,6 +46,11 @@ static bool read_obj(const char *path, std::vector<double> &points, std::vector<
                 long i = std::strtol(corner.c_str(), nullptr, 10);
                 long count = static_cast<long>(points.size() / 3);
                 corners.push_back(i < 0 ? count + i : i - 1);
+                if (corners.back() < 0 || corners.back() >= count) {
+                    std::fprintf(stderr, "kirsanov_driver: %s:%u: no vertex %s\n", path, number,
+                                 corner.c_str());
+                    return false;
+                }
             }
             if (corners.size() != 3) {
                 std::fprintf(stderr, "kirsanov_driver: %s:%u: not a triangle\n", path, number);
