@@ -563,8 +563,8 @@ fn paths_round_a_vertex_on_a_straight_crease_either_way_are_one() {
 /// chains of regions that no normal form relates. The images' keys (the classes of their strips
 /// to the edge's ends, `paths.rs`) are one, and the ends are one point by structure. Without the
 /// keys, 14 and 11 decisions stayed uncertified. Checked against the adaptive backend: from
-/// v129, f64 gives v62 a distance 2.2 % long (1.4458 against 1.4142), where adaptive and exact
-/// agree within 1e-15.
+/// v129, f64 gave v62 a distance 2.2 % long (1.4458 against 1.4142) until vertices in the gaps
+/// rounding leaves between wedges were reached (`tests/rounding_gaps.rs`).
 #[test]
 fn mirror_images_of_a_light_cast_one_shadow_line() {
     let file = "subdivided_tetrahedron_8_decimals.obj";

@@ -16,6 +16,7 @@ mod propagate;
 mod provenance;
 mod query;
 mod region_runs;
+mod rounded_gap;
 mod source;
 mod stats;
 mod stop;

@@ -10,6 +10,7 @@ use super::front::{acts_as_pseudo_source, EventKind, Front};
 use super::paths::{continued, CongruentPaths, Path};
 use super::planar::Planar;
 use super::provenance::{keeps_values, Anchor, Light, Provenance};
+use super::rounded_gap::{distance_through, end_beside};
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::stop::StopPoints;
@@ -1006,6 +1007,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
         }
         if let Some((v, d)) = apex {
             self.offer_vertex(v, (d, apex_path), w);
+        } else if let Some(end) = end_beside(w, &shadow, length) {
+            // An apex in a gap that rounding left beside the range (see `rounded_gap.rs`).
+            let d = distance_through(w, end, (layout.apex_x, layout.apex_h));
+            self.offer_vertex(layout.apex_vertex(), (d, apex_path), w);
         }
         for (g, [p0, p1], at, mut kept) in children.into_iter().flatten() {
             let (b0, b1) = if p0.compare(&p1) == Ordering::Greater {

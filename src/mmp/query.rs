@@ -4,6 +4,7 @@
 
 use super::field::GeodesicField;
 use super::planar::Planar;
+use super::rounded_gap::{distance_through, end_beside};
 use super::source::{PointError, SurfacePoint};
 use super::wedge::Wedge;
 use crate::mesh::{EdgeId, FaceId, SourceId, VertexId};
@@ -198,6 +199,46 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     },
                 },
             );
+        }
+        best
+    }
+
+    /// The best way to the point `at` (in the edge's frame, y > 0 towards `face`) through an end
+    /// of the range of a wedge on `edge`, among those `accept`ed, lit from beyond the edge,
+    /// where the point lies in a gap that rounding left beside the range (see
+    /// `rounded_gap.rs`): to that end of the range, then straight to the point. Its `via` names
+    /// the wedge at the end of the range, where the way back leaves the edge.
+    pub(crate) fn best_beside_edge(
+        &self,
+        edge: EdgeId,
+        face: FaceId,
+        at: &Planar<S>,
+        accept: impl Fn(&Wedge<S>) -> bool,
+    ) -> Option<Best<S>> {
+        let side = self.mesh().side_of(edge, face)?;
+        let length = self.unfolding.length(edge);
+        let mut best = None;
+        for (i, w) in self.wedges.on(edge).iter().enumerate() {
+            if !accept(w) || w.tau == side || w.source_y.sign() == Sign::Zero {
+                continue;
+            }
+            let depth = w.source_y.clone() + &at.y;
+            let shadow = w.source_x.clone() + (at.x.clone() - &w.source_x) * &w.source_y / depth;
+            let Some(end) = end_beside(w, &shadow, length) else {
+                continue;
+            };
+            let distance = distance_through(w, end, (&at.x, &at.y));
+            let at = Planar {
+                x: end.clone(),
+                y: S::zero(),
+            };
+            let via = Via::Wedge {
+                edge,
+                wedge: i,
+                face,
+                at,
+            };
+            keep_better(&mut best, Best { distance, via });
         }
         best
     }

@@ -448,6 +448,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
             };
             let beyond = |w: &Wedge<S>| !own(w) && w.tau != side;
             consider(self.best_through_edge(edge, face, &at, beyond));
+            consider(self.best_beside_edge(edge, face, &at, beyond));
         }
         for &edge in self.mesh().vertex_edges(v) {
             let (_, at) = self.end_of_edge(edge, v);
