@@ -27,6 +27,33 @@ fn relative(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(1.0)
 }
 
+/// The distance of each point in the rounded backend's field agrees with the exact one to
+/// 1e-12, and the path traced back from it is as long.
+fn check_points<S: Scalar>(
+    case: &str,
+    field: &GeodesicField<S>,
+    exact: &GeodesicField<Real>,
+    points: &[SurfacePoint],
+) {
+    for p in points {
+        let truth = exact.distance_at(p).expect("a point of the mesh");
+        let d = field.distance_at(p).expect("a point of the mesh");
+        assert!(
+            relative(d, truth) <= 1e-12,
+            "{case}: {p:?} at {d}, exact {truth}"
+        );
+        let path = field
+            .trace_back(p)
+            .unwrap_or_else(|e| panic!("{case}: no path from {p:?}: {e}"));
+        assert!(
+            path.is_as_long_as_its_distance(1e-12),
+            "{case}: path from {p:?} {} long, distance {}",
+            path.length(),
+            path.distance
+        );
+    }
+}
+
 /// From every vertex of the three solids, the `f64` and adaptive backends give every vertex
 /// the same distance to 1e-12: the two round differently, and lost different vertices.
 #[test]
@@ -47,8 +74,9 @@ fn rounded_backends_agree_from_every_vertex_of_rounded_solids() {
 }
 
 /// Sources from which a vertex fell in a gap, against the exact backend: both rounded backends
-/// give every vertex its exact distance to 1e-12, and the path traced back to the vertex that
-/// was lost is as long as its distance (the way through the range's end, then the wedge's).
+/// give every vertex its exact distance to 1e-12, and so points of the geodesic's last segment
+/// to the vertex that was lost, and the path traced back to that vertex is as long as its
+/// distance (the way through the range's end, then the wedge's).
 #[test]
 fn vertices_in_rounding_gaps_get_their_geodesic_and_its_path() {
     let cases = [
@@ -79,9 +107,35 @@ fn vertices_in_rounding_gaps_get_their_geodesic_and_its_path() {
             );
         };
         let target = SurfacePoint::Vertex(VertexId(lost));
+        // Points of the exact geodesic's last segment, from the edge it crosses to the vertex
+        // (the way that lay in the gap), in the face of both.
+        let exact_path = exact.trace_back(&target).expect("an exact path");
+        let SurfacePoint::Edge { edge, t } = exact_path.simplices[1] else {
+            panic!("{file} from v{source}: the geodesic to v{lost} leaves no edge");
+        };
+        let [a, b] = mesh.edge(edge).vertices;
+        let face = mesh
+            .edge_faces(edge)
+            .find(|&f| mesh.face(f).contains(&VertexId(lost)))
+            .expect("the face of the edge and the vertex");
+        let on_segment: Vec<SurfacePoint> = [0.5, 0.8, 0.9, 0.97]
+            .iter()
+            .map(|&k| {
+                let weight = |c: VertexId| match c {
+                    c if c == a => (1.0 - k) * (1.0 - t),
+                    c if c == b => (1.0 - k) * t,
+                    _ => k,
+                };
+                let bary = mesh.face(face).map(weight);
+                SurfacePoint::Face { face, bary }
+            })
+            .collect();
         let float = field::<f64>(&mesh, source);
+        let case = format!("{file} from v{source}");
+        check_points(&format!("{case}, f64"), &float, &exact, &on_segment);
         check("f64", &float.vertex_distances(), float.trace_back(&target));
         let adaptive = field::<Adaptive>(&mesh, source);
+        check_points(&format!("{case}, adaptive"), &adaptive, &exact, &on_segment);
         check(
             "adaptive",
             &adaptive.vertex_distances(),

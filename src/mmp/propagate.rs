@@ -1007,7 +1007,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         }
         if let Some((v, d)) = apex {
             self.offer_vertex(v, (d, apex_path), w);
-        } else if let Some(end) = end_beside(w, &shadow, length) {
+        } else if let Some(end) = end_beside(w, || shadow.clone(), length) {
             // An apex in a gap that rounding left beside the range (see `rounded_gap.rs`).
             let d = distance_through(w, end, (layout.apex_x, layout.apex_h));
             self.offer_vertex(layout.apex_vertex(), (d, apex_path), w);

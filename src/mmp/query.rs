@@ -108,6 +108,9 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 if let Some(found) = self.best_through_edge(edge, face, &at, |_| true) {
                     keep_better(&mut best, found);
                 }
+                if let Some(found) = self.best_beside_edge(edge, face, &at, |_| true) {
+                    keep_better(&mut best, found);
+                }
             }
             for v in self.mesh().face(face) {
                 if let Some(d) = &self.vertices[v.index()] {
@@ -222,9 +225,11 @@ impl<S: Scalar> GeodesicField<'_, S> {
             if !accept(w) || w.tau == side || w.source_y.sign() == Sign::Zero {
                 continue;
             }
-            let depth = w.source_y.clone() + &at.y;
-            let shadow = w.source_x.clone() + (at.x.clone() - &w.source_x) * &w.source_y / depth;
-            let Some(end) = end_beside(w, &shadow, length) else {
+            let shadow = || {
+                let depth = w.source_y.clone() + &at.y;
+                w.source_x.clone() + (at.x.clone() - &w.source_x) * &w.source_y / depth
+            };
+            let Some(end) = end_beside(w, shadow, length) else {
                 continue;
             };
             let distance = distance_through(w, end, (&at.x, &at.y));

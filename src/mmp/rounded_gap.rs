@@ -25,14 +25,20 @@ use std::cmp::Ordering;
 /// it to vertices that no rounding could have put there.
 const ROUNDED_GAP: f64 = 1e-6;
 
-/// The end of the range `[b0, b1]` (on an edge of the given length) beside which `shadow`,
-/// where the ray from the pseudo-source to a point crosses the edge's line, lies outside the
-/// range in a gap that rounding may have left; `None` for number types that keep values.
-/// These types' values are their `f64`s, so the gap is measured on them.
-pub(crate) fn end_beside<'a, S: Scalar>(w: &'a Wedge<S>, shadow: &S, length: &S) -> Option<&'a S> {
+/// The end of the wedge's range (on an edge of the given length) beside which the `shadow` of
+/// a point, where the ray from the pseudo-source to it crosses the edge's line, lies outside
+/// the range in a gap that rounding may have left; `None` for number types that keep values,
+/// which do not construct the shadow. The others' values are their `f64`s, so the gap is
+/// measured on them.
+pub(crate) fn end_beside<'a, S: Scalar>(
+    w: &'a Wedge<S>,
+    shadow: impl FnOnce() -> S,
+    length: &S,
+) -> Option<&'a S> {
     if keeps_values::<S>() {
         return None;
     }
+    let shadow = shadow();
     let end = if shadow.compare(&w.b0) == Ordering::Less {
         &w.b0
     } else if shadow.compare(&w.b1) == Ordering::Greater {
