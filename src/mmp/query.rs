@@ -105,10 +105,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 let Some(at) = at else {
                     continue; // An edge of length zero carries no wedge.
                 };
-                if let Some(found) = self.best_through_edge(edge, face, &at, |_| true) {
-                    keep_better(&mut best, found);
-                }
-                if let Some(found) = self.best_beside_edge(edge, face, &at, |_| true) {
+                if let Some(found) = self.best_through_edge(edge, face, &at, |_| true, true) {
                     keep_better(&mut best, found);
                 }
             }
@@ -136,13 +133,17 @@ impl<S: Scalar> GeodesicField<'_, S> {
     }
 
     /// The best wedge on `edge`, among those `accept`ed, whose pseudo-source sees the point `at`
-    /// (in the edge's frame, y >= 0 towards `face`) through the wedge's range.
+    /// (in the edge's frame, y >= 0 towards `face`) through the wedge's range; with `beside`,
+    /// also the way through the end of a range beside which the point lies in a gap that
+    /// rounding left (see `rounded_gap.rs`): to that end, then straight to the point, its `via`
+    /// naming the wedge at the end, where the way back leaves the edge.
     pub(crate) fn best_through_edge(
         &self,
         edge: EdgeId,
         face: FaceId,
         at: &Planar<S>,
         accept: impl Fn(&Wedge<S>) -> bool,
+        beside: bool,
     ) -> Option<Best<S>> {
         let side = self.mesh().side_of(edge, face)?;
         let length = self.unfolding.length(edge);
@@ -180,7 +181,25 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 let depth = w.source_y.clone() + &at.y;
                 Some(w.source_x.clone() + (at.x.clone() - &w.source_x) * &w.source_y / depth)
             };
-            if crossing.is_some_and(|c| !S::within(&c, &w.b0, &w.b1, || length.clone())) {
+            if let Some(c) = crossing.filter(|c| !S::within(c, &w.b0, &w.b1, || length.clone())) {
+                // Outside the range: reached through its end only from a pseudo-source beyond
+                // the edge, in a gap that rounding left beside the range (see `rounded_gap.rs`).
+                if beside && !same_side && w.source_y.sign() != Sign::Zero {
+                    if let Some(end) = end_beside(w, || c, length) {
+                        let distance = distance_through(w, end, (&at.x, &at.y));
+                        let at = Planar {
+                            x: end.clone(),
+                            y: S::zero(),
+                        };
+                        let via = Via::Wedge {
+                            edge,
+                            wedge: i,
+                            face,
+                            at,
+                        };
+                        keep_better(&mut best, Best { distance, via });
+                    }
+                }
                 continue;
             }
             let dx = at.x.clone() - &w.source_x;
@@ -202,48 +221,6 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     },
                 },
             );
-        }
-        best
-    }
-
-    /// The best way to the point `at` (in the edge's frame, y > 0 towards `face`) through an end
-    /// of the range of a wedge on `edge`, among those `accept`ed, lit from beyond the edge,
-    /// where the point lies in a gap that rounding left beside the range (see
-    /// `rounded_gap.rs`): to that end of the range, then straight to the point. Its `via` names
-    /// the wedge at the end of the range, where the way back leaves the edge.
-    pub(crate) fn best_beside_edge(
-        &self,
-        edge: EdgeId,
-        face: FaceId,
-        at: &Planar<S>,
-        accept: impl Fn(&Wedge<S>) -> bool,
-    ) -> Option<Best<S>> {
-        let side = self.mesh().side_of(edge, face)?;
-        let length = self.unfolding.length(edge);
-        let mut best = None;
-        for (i, w) in self.wedges.on(edge).iter().enumerate() {
-            if !accept(w) || w.tau == side || w.source_y.sign() == Sign::Zero {
-                continue;
-            }
-            let shadow = || {
-                let depth = w.source_y.clone() + &at.y;
-                w.source_x.clone() + (at.x.clone() - &w.source_x) * &w.source_y / depth
-            };
-            let Some(end) = end_beside(w, shadow, length) else {
-                continue;
-            };
-            let distance = distance_through(w, end, (&at.x, &at.y));
-            let at = Planar {
-                x: end.clone(),
-                y: S::zero(),
-            };
-            let via = Via::Wedge {
-                edge,
-                wedge: i,
-                face,
-                at,
-            };
-            keep_better(&mut best, Best { distance, via });
         }
         best
     }

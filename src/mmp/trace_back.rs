@@ -293,7 +293,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                             let at = Planar { x, y: S::zero() };
                             let face = self.mesh().edge_faces(edge).next().expect("a face");
                             via = self
-                                .best_through_edge(edge, face, &at, |_| true)
+                                .best_through_edge(edge, face, &at, |_| true, false)
                                 .ok_or_else(|| TraceError::Lost {
                                     near: format!("{edge}"),
                                 })?
@@ -447,14 +447,13 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 continue;
             };
             let beyond = |w: &Wedge<S>| !own(w) && w.tau != side;
-            consider(self.best_through_edge(edge, face, &at, beyond));
-            consider(self.best_beside_edge(edge, face, &at, beyond));
+            consider(self.best_through_edge(edge, face, &at, beyond, true));
         }
         for &edge in self.mesh().vertex_edges(v) {
             let (_, at) = self.end_of_edge(edge, v);
             let arrives = |w: &Wedge<S>| !own(w) && self.ray_enters_corner(w, &at);
             for face in self.mesh().edge_faces(edge) {
-                consider(self.best_through_edge(edge, face, &at, arrives));
+                consider(self.best_through_edge(edge, face, &at, arrives, false));
             }
         }
         best.or_else(|| self.arrival_near_vertex(v, &own))
@@ -509,7 +508,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         let arrives = |w: &Wedge<S>| !own(w) && self.ray_enters_corner(w, &at);
         self.mesh()
             .edge_faces(edge)
-            .filter_map(|face| self.best_through_edge(edge, face, &at, arrives))
+            .filter_map(|face| self.best_through_edge(edge, face, &at, arrives, false))
             .min_by(|a, b| self.better_arrival(a, b))
     }
 
