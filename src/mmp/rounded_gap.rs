@@ -19,17 +19,19 @@ use super::wedge::Wedge;
 use crate::scalar::Scalar;
 use std::cmp::Ordering;
 
-/// The widest gap, as a fraction of the edge's length, that rounded crossings are taken to
-/// leave: the gap that left a vertex of the tetrahedron unlit was 7e-9 of its edge. The path
-/// through a range end is a path whatever the gap, so this only bounds the work of offering
-/// it to vertices that no rounding could have put there.
+/// The widest gap that rounded crossings are taken to leave, as a fraction of the scale of the
+/// meeting: the edge's length or, if larger, the image's offsets from the range's end. A
+/// crossing near a double root is placed to about the square root of the rounding times the
+/// size of the images' offsets (the gap that left a vertex of the tetrahedron unlit was 7e-9
+/// of its edge). The path through a range end is a path whatever the gap, so this only bounds
+/// the work of offering it to vertices that no rounding could have put there.
 const ROUNDED_GAP: f64 = 1e-6;
 
 /// The end of the wedge's range (on an edge of the given length) beside which the `shadow` of
 /// a point, where the ray from the pseudo-source to it crosses the edge's line, lies outside
-/// the range in a gap that rounding may have left; `None` for number types that keep values,
-/// which do not construct the shadow. The others' values are their `f64`s, so the gap is
-/// measured on them.
+/// the range in a gap that rounding may have left ([`ROUNDED_GAP`]); `None` for number types
+/// that keep values, which do not construct the shadow. The others' values are their `f64`s,
+/// so the gap is measured on them.
 pub(crate) fn end_beside<'a, S: Scalar>(
     w: &'a Wedge<S>,
     shadow: impl FnOnce() -> S,
@@ -46,8 +48,15 @@ pub(crate) fn end_beside<'a, S: Scalar>(
     } else {
         return None;
     };
-    let gap = (shadow.to_f64() - end.to_f64()).abs();
-    (gap <= ROUNDED_GAP * length.to_f64()).then_some(end)
+    let end_f64 = end.to_f64();
+    let scale = [
+        length.to_f64(),
+        (w.source_x.to_f64() - end_f64).abs(),
+        w.source_y.to_f64().abs(),
+    ]
+    .into_iter()
+    .fold(0.0, f64::max);
+    ((shadow.to_f64() - end_f64).abs() <= ROUNDED_GAP * scale).then_some(end)
 }
 
 /// The length of the path through the point `end` of the wedge's range to the point at
