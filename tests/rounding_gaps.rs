@@ -104,6 +104,7 @@ fn a_finer_rounded_icosahedron_loses_no_vertex() {
 }
 
 /// Sources from which a vertex fell in a gap, against the exact backend: both rounded backends
+/// count vertices lowered through a gap (`Stats::rounded_gap_offers`), exact none; both
 /// give every vertex its exact distance to 1e-12, and so points of the geodesic's last segment
 /// to the vertex that was lost, and the path traced back to that vertex is as long as its
 /// distance (the way through the range's end, then the wedge's).
@@ -160,11 +161,25 @@ fn vertices_in_rounding_gaps_get_their_geodesic_and_its_path() {
                 SurfacePoint::Face { face, bary }
             })
             .collect();
+        assert_eq!(
+            exact.stats().rounded_gap_offers,
+            0,
+            "{file} from v{source}: the exact backend leaves no gap"
+        );
         let float = field::<f64>(&mesh, source);
         let case = format!("{file} from v{source}");
         check_points(&format!("{case}, f64"), &float, &exact, &on_segment);
         check("f64", &float.vertex_distances(), float.trace_back(&target));
         let adaptive = field::<Adaptive>(&mesh, source);
+        for (name, offers) in [
+            ("f64", float.stats().rounded_gap_offers),
+            ("adaptive", adaptive.stats().rounded_gap_offers),
+        ] {
+            assert!(
+                offers > 0,
+                "{case}, {name}: no vertex reached through a gap"
+            );
+        }
         check_points(&format!("{case}, adaptive"), &adaptive, &exact, &on_segment);
         check(
             "adaptive",

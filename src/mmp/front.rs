@@ -181,20 +181,22 @@ impl<S: Scalar> Front<S> {
         self.pending_emission[v.index()] = false;
     }
 
-    /// Lowers a vertex's distance if `distance` is better; a vertex that may bend geodesics then
-    /// waits in the queue to act as a pseudo-source. Its twins (ends of its edges of length
-    /// zero, the same point of the surface) take the same distance as it is, not a rounded
-    /// copy of it.
+    /// Lowers a vertex's distance if `distance` is better, and says whether it was; a vertex
+    /// that may bend geodesics then waits in the queue to act as a pseudo-source. Its twins
+    /// (ends of its edges of length zero, the same point of the surface) take the same
+    /// distance as it is, not a rounded copy of it.
     pub(crate) fn improve_vertex(
         &mut self,
         (mesh, unfolding): (&TriMesh, &Unfolding<S>),
         v: VertexId,
         distance: S,
         (source, path): (SourceId, S::Kept<Path>),
-    ) {
+    ) -> bool {
         let slot = &mut self.vertices[v.index()];
         match slot {
-            Some(known) if distance.compare_distance(&known.distance) != Ordering::Less => return,
+            Some(known) if distance.compare_distance(&known.distance) != Ordering::Less => {
+                return false
+            }
             Some(_) => {}
             None => self.reached += 1,
         }
@@ -220,20 +222,22 @@ impl<S: Scalar> Front<S> {
                 }
             }
         }
+        true
     }
 
     /// A wedge's distance `d` at the vertex `v`, offered to it: no lower than its pseudo-source's
     /// straight line to `v` in space, where the backend repairs rounding ([`Scalar::at_least`]).
-    /// `path` is the path of the wedge's distance there, if kept.
+    /// `path` is the path of the wedge's distance there, if kept. Whether it lowered the
+    /// vertex's distance.
     pub(crate) fn offer_vertex(
         &mut self,
         (mesh, unfolding, sources): (&TriMesh, &Unfolding<S>, &[SurfacePoint]),
         v: VertexId,
         (d, path): (S, S::Kept<Path>),
         w: &Wedge<S>,
-    ) {
+    ) -> bool {
         let d = S::at_least(d, || unfolding.straight_bound(mesh, w, v, sources));
-        self.improve_vertex((mesh, unfolding), v, d, (w.source, path));
+        self.improve_vertex((mesh, unfolding), v, d, (w.source, path))
     }
 
     /// The vertices' distances at the end of a run, those beyond `max` (the run's maximum

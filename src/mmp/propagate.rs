@@ -455,10 +455,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
     }
 
     /// A wedge's distance `d` at the vertex `v` (the length of `path`, if kept), offered to it
-    /// ([`Front::offer_vertex`]).
-    fn offer_vertex(&mut self, v: VertexId, d: (S, S::Kept<Path>), w: &Wedge<S>) {
+    /// ([`Front::offer_vertex`]); whether it lowered the vertex's distance.
+    fn offer_vertex(&mut self, v: VertexId, d: (S, S::Kept<Path>), w: &Wedge<S>) -> bool {
         let surface = (self.mesh, &self.unfolding, self.sources.as_slice());
-        self.front.offer_vertex(surface, v, d, w);
+        self.front.offer_vertex(surface, v, d, w)
     }
 
     /// The path that starts at source vertex `v`, where the run keeps paths.
@@ -1010,7 +1010,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
         } else if let Some(end) = end_beside(w, || shadow.clone(), length) {
             // An apex in a gap that rounding left beside the range (see `rounded_gap.rs`).
             let d = distance_through(w, end, (layout.apex_x, layout.apex_h));
-            self.offer_vertex(layout.apex_vertex(), (d, apex_path), w);
+            if self.offer_vertex(layout.apex_vertex(), (d, apex_path), w) {
+                self.stats.rounded_gap_offers += 1;
+            }
         }
         for (g, [p0, p1], at, mut kept) in children.into_iter().flatten() {
             let (b0, b1) = if p0.compare(&p1) == Ordering::Greater {

@@ -39,6 +39,10 @@ pub struct Stats {
     /// New wedges discarded because a vertex already reached their whole range more cheaply
     /// [SSK+05 §4.2].
     pub wedges_filtered: u64,
+    /// Times a vertex's distance was lowered by the path through the end of a wedge's range,
+    /// the vertex lying in a gap that rounding left beside the range (`mmp/rounded_gap.rs`;
+    /// number types that keep values leave none). A later wedge may still lower it further.
+    pub rounded_gap_offers: u64,
     /// Wedges joined to the wedge before them on their edge, which they continue: the same
     /// image of the same pseudo-source, with ranges that meet (in an exactly flat region, on
     /// the shadow line of a vertex).
