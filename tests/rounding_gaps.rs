@@ -56,22 +56,28 @@ fn check_points<S: Scalar>(
     }
 }
 
+/// From each of `sources`, the `f64` and adaptive backends give every vertex the same distance
+/// to 1e-12.
+fn assert_rounded_backends_agree(mesh: &TriMesh, sources: impl Iterator<Item = u32>, case: &str) {
+    for source in sources {
+        let float = common::distances::<f64>(mesh, source);
+        let adaptive = common::distances::<Adaptive>(mesh, source);
+        for (v, (f, a)) in float.iter().zip(&adaptive).enumerate() {
+            assert!(
+                relative(*f, *a) <= 1e-12,
+                "{case} from v{source}: vertex {v} at {f} (f64) and {a} (adaptive)"
+            );
+        }
+    }
+}
+
 /// From every vertex of the three solids, the `f64` and adaptive backends give every vertex
 /// the same distance to 1e-12: the two round differently, and lost different vertices.
 #[test]
 fn rounded_backends_agree_from_every_vertex_of_rounded_solids() {
     for file in SOLIDS {
         let mesh = common::data_mesh(file);
-        for source in 0..mesh.vertex_count() as u32 {
-            let float = common::distances::<f64>(&mesh, source);
-            let adaptive = common::distances::<Adaptive>(&mesh, source);
-            for (v, (f, a)) in float.iter().zip(&adaptive).enumerate() {
-                assert!(
-                    relative(*f, *a) <= 1e-12,
-                    "{file} from v{source}: vertex {v} at {f} (f64) and {a} (adaptive)"
-                );
-            }
-        }
+        assert_rounded_backends_agree(&mesh, 0..mesh.vertex_count() as u32, file);
     }
 }
 
@@ -91,16 +97,8 @@ fn a_finer_rounded_icosahedron_loses_no_vertex() {
         .collect();
     let mesh = TriMesh::new(rounded, split.faces().to_vec()).expect("a usable mesh");
     let count = mesh.vertex_count() as u32;
-    for source in (0..count).step_by(count as usize / 32) {
-        let float = common::distances::<f64>(&mesh, source);
-        let adaptive = common::distances::<Adaptive>(&mesh, source);
-        for (v, (f, a)) in float.iter().zip(&adaptive).enumerate() {
-            assert!(
-                relative(*f, *a) <= 1e-12,
-                "from v{source}: vertex {v} at {f} (f64) and {a} (adaptive)"
-            );
-        }
-    }
+    let sources = (0..count).step_by(count as usize / 32);
+    assert_rounded_backends_agree(&mesh, sources, "rounded icosahedron");
 }
 
 /// Sources from which a vertex fell in a gap, against the exact backend: both rounded backends
