@@ -7,7 +7,7 @@
 //! has a double root (to about the square root of the rounding, 1.5e-8 of the scale), and the
 //! rays may then part: a vertex between them is lit by neither wedge. On a tetrahedron and an
 //! octahedron rounded to 8 decimals, vertices so missed came out 2 to 3 % long in both the
-//! `f64` and the adaptive backend.
+//! `f64` and the adaptive backend; on such solids split finer, from most sources, by up to 21 %.
 //!
 //! Such a vertex is reached by the path through the nearer end of a wedge's range, straight
 //! across the face: a path on the surface however the end was rounded, so never shorter than
