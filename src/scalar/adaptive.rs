@@ -133,8 +133,9 @@ struct Signs<'a> {
     a: &'a SourceDistance<Adaptive>,
     b: &'a SourceDistance<Adaptive>,
     ends: [f64; 2],
-    /// The gaps (same side, mirrored), then `P` at the start and at the end.
-    known: Cell<[Option<Sign>; 4]>,
+    /// The gaps (same side, mirrored), `P` at the start and at the end, then
+    /// [`roots::excess_at_zero`].
+    known: Cell<[Option<Sign>; 5]>,
 }
 
 impl Signs<'_> {
@@ -142,7 +143,8 @@ impl Signs<'_> {
         let (a, b) = (lift::<T>(self.a), lift::<T>(self.b));
         match at {
             0 | 1 => roots::source_gap(&a, &b, at == 1),
-            _ => roots::eq2_at(&a, &b, &T::from_f64(self.ends[at - 2])),
+            2 | 3 => roots::eq2_at(&a, &b, &T::from_f64(self.ends[at - 2])),
+            _ => roots::excess_at_zero(&a, &b, &T::from_f64(self.ends[0])),
         }
         .certified_sign()
     }
@@ -169,6 +171,10 @@ impl roots::InputSigns for Signs<'_> {
 
     fn at_end(&self, end: bool) -> Option<Sign> {
         self.sign(2 + end as usize)
+    }
+
+    fn excess_at_zero(&self) -> Option<Sign> {
+        self.sign(4)
     }
 }
 
@@ -245,8 +251,7 @@ fn root_positions(
     // (a well-conditioned root); then double-double values, known to within 2^-60 (of
     // themselves, or absolutely below 1: the inputs are of unit size here); exact rationals
     // where neither is accurate.
-    let [r, s] = scaled_positions(a, b, &crossings, lo, unit, ErrorBound::accurate_f64)
-        .or_else(|| scaled_positions(a, b, &crossings, lo, unit, DoubleDouble::accurate_f64))
+    let [r, s] = scaled_positions(a, b, &crossings, lo, unit, DoubleDouble::accurate_f64)
         .unwrap_or_else(|| {
             scaled_positions(a, b, &crossings, lo, unit, |q: Q| Some(q.to_f64()))
                 .expect("exact rationals give every value")
@@ -430,7 +435,7 @@ impl Scalar for Adaptive {
             a,
             b,
             ends: [lo.0, hi.0],
-            known: Cell::new([None; 4]),
+            known: Cell::new([None; 5]),
         };
         let crossings = filtered(
             || {

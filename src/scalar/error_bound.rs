@@ -44,14 +44,6 @@ impl ErrorBound {
             error: (propagated + ROUNDING * value.abs()) * SLACK,
         }
     }
-
-    /// The value if it is known to within `2^-50` of itself (a few ulps), else `None`: the
-    /// adaptive backend places eq. (2)'s roots from such values where they are that accurate,
-    /// and computes them more finely only where they are not.
-    #[inline(always)]
-    pub(crate) fn accurate_f64(self) -> Option<f64> {
-        (self.error <= self.value.abs() * (1.0 / (1u64 << 50) as f64)).then_some(self.value)
-    }
 }
 
 impl Add for ErrorBound {

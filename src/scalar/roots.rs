@@ -109,6 +109,40 @@ pub(crate) fn eq2_at<T: Ring>(a: &SourceDistance<T>, b: &SourceDistance<T>, orig
     Eq2Terms::new(a, b, origin).constant()
 }
 
+/// The linear form `m u + c` that equals `A (q2(u) - beta^2)` at the roots of eq. (2)'s `P`
+/// (`q2` the squared distance from the second pseudo-source), as `(m, c)`: `q2 - beta^2`
+/// reduced by `P / A` has slope `-2 x2 - B / A = -alpha (2 alpha x2 + gamma) / A`, written so
+/// that it is zero with alpha (pseudo-sources level along the edge, as on a wall below a
+/// polygonal rim) by its factor, not by the cancellation of two deep terms.
+fn reduced_excess<T: Ring>(
+    [alpha, x2, gamma, excess]: [&T; 4],
+    eq2: &Eq2Coefficients<T>,
+) -> (T, T) {
+    let m = -(alpha.clone() * &(T::from_f64(2.0) * alpha * x2 + gamma));
+    (m, eq2.a.clone() * excess - &eq2.c)
+}
+
+/// `P(p) m^2 = A c^2 - B c m + C m^2`, `P` at the zero `p = -c / m` of `m u + c` scaled to a
+/// polynomial: no division, which made values a filter could not tell from zero.
+fn at_zero_of<T: Ring>(eq2: &Eq2Coefficients<T>, m: &T, c: &T) -> T {
+    eq2.a.clone() * c * c - &(eq2.b.clone() * c * m) + &(eq2.c.clone() * m * m)
+}
+
+/// [`at_zero_of`] the [`reduced_excess`], with positions measured from `origin`: whether the
+/// linear form is zero left of a root of `P`, between the roots or right of both, which tells
+/// whether that root solves eq. (1) where the sigmas fall along it.
+pub(crate) fn excess_at_zero<T: Ring>(
+    a: &SourceDistance<T>,
+    b: &SourceDistance<T>,
+    origin: &T,
+) -> T {
+    let terms = Eq2Terms::new(a, b, origin);
+    let eq2 = terms.coefficients();
+    let excess = terms.n2.clone() - &terms.beta2;
+    let (m, c) = reduced_excess([&terms.alpha, &terms.x2, &terms.gamma, &excess], &eq2);
+    at_zero_of(&eq2, &m, &c)
+}
+
 /// Signs that depend on the two wedges and the ends of their shared range only, which a
 /// backend may decide apart from the rest of [`crossings`] when the filter's number type cannot:
 /// they are the ones near-degenerate meetings make hard, and deciding them alone is far cheaper
@@ -120,6 +154,14 @@ pub(crate) trait InputSigns {
     /// The sign of eq. (2)'s `P` at the start (`false`) or end (`true`) of the range
     /// ([`eq2_at`]): near zero when the range starts where the two wedges already cross.
     fn at_end(&self, end: bool) -> Option<Sign>;
+
+    /// The sign of [`excess_at_zero`] from the range's start: near zero where a root of `P`
+    /// lies near the range's start and the pseudo-source of the first wedge on the edge's line
+    /// there (a vertex's wedge along its edge, met by the wedge that gave the vertex its
+    /// distance).
+    fn excess_at_zero(&self) -> Option<Sign> {
+        None
+    }
 
     /// Where the engine knows by structure that one pseudo-source is seen straight from the
     /// other (see [`SeenStraight`]): whether the two lie on opposite sides of the edge's line
@@ -250,17 +292,8 @@ struct TwoRoots<'a, T> {
 }
 
 impl<T: CertifiedSign> TwoRoots<'_, T> {
-    /// The sign of `root - p` for the smaller (`larger = false`) or larger root.
-    fn root_minus(&self, larger: bool, p: &T) -> Option<Sign> {
-        let e = self.eq2;
-        let at_p = e.a.clone() * p * p + &(e.b.clone() * p) + &e.c;
-        self.root_minus_given(larger, at_p.certified_sign()?, || {
-            (T::from_f64(2.0) * &e.a * p + &e.b).certified_sign()
-        })
-    }
-
-    /// [`Self::root_minus`] from the signs of `P(p)` and of the slope `P'(p)`, the slope asked
-    /// only if needed.
+    /// The sign of `root - p` for the smaller (`larger = false`) or larger root, from the signs
+    /// of `P(p)` and of the slope `P'(p)`, the slope asked only if needed.
     fn root_minus_given(
         &self,
         larger: bool,
@@ -287,15 +320,29 @@ impl<T: CertifiedSign> TwoRoots<'_, T> {
         })
     }
 
-    /// The sign of `m r + c` at a root `r`.
-    fn linear_at(&self, larger: bool, m: &T, c: &T) -> Option<Sign> {
-        match m.certified_sign()? {
-            Sign::Zero => c.certified_sign(),
+    /// The sign of `(m r + c) / A` at a root `r`, without a division: `m r + c = m (r - p)` at
+    /// `p = -c / m`, and `P(p) m^2` ([`at_zero_of`], or `decided` where `T` cannot tell its
+    /// sign) and `P'(p) m = B m - 2 A c` tell where `p` lies.
+    fn linear_over_a_at(
+        &self,
+        larger: bool,
+        m: &T,
+        c: &T,
+        decided: impl FnOnce() -> Option<Sign>,
+    ) -> Option<Sign> {
+        let e = self.eq2;
+        let sign = match m.certified_sign()? {
+            Sign::Zero => c.certified_sign()?,
             sm => {
-                let p = -(c.clone() / m);
-                Some(self.root_minus(larger, &p)?.times(sm))
+                let at_p = at_zero_of(e, m, c).certified_sign().or_else(decided)?;
+                let slope = || {
+                    let scaled = e.b.clone() * m - &(T::from_f64(2.0) * &e.a * c);
+                    Some(scaled.certified_sign()?.times(sm))
+                };
+                self.root_minus_given(larger, at_p, slope)?.times(sm)
             }
-        }
+        };
+        Some(sign.times(self.sa))
     }
 }
 
@@ -464,12 +511,8 @@ pub(crate) fn crossings<T: CertifiedSign>(
     }
     let roots = TwoRoots { eq2: &eq2, sa };
     let zero = T::from_f64(0.0);
-    // At a root, L(u) = 2 alpha u + gamma; q2(u) - beta^2 reduced by P / A is linear too, with
-    // slope -2 x2 - B / A = -alpha (2 alpha x2 + gamma) / A: written so, it is zero with alpha
-    // (pseudo-sources level along the edge, as on a wall below a polygonal rim) by its factor,
-    // not by the cancellation of two deep terms.
-    let m_q = -(alpha.clone() * &(two.clone() * &alpha * &x2 + &gamma)) / &eq2.a;
-    let c_q = q2_excess.clone() - &(eq2.c.clone() / &eq2.a);
+    // At a root, L(u) = 2 alpha u + gamma; q2(u) - beta^2 is linear there too.
+    let (m_q, c_q) = reduced_excess([&alpha, &x2, &gamma, &q2_excess], &eq2);
     let two_alpha = two.clone() * &alpha;
     // At the foot of a pseudo-source on the edge's line (a vertex's wedge along its edge), P is
     // (G / 2)^2 and its slope -+alpha G, G the gap (either one: they agree when a y is zero).
@@ -531,7 +574,7 @@ pub(crate) fn crossings<T: CertifiedSign>(
         if sl != Sign::Zero && sl != sbeta {
             return Some(false);
         }
-        if sbeta == Sign::Negative && roots.linear_at(larger, &m_q, &c_q)? == Sign::Negative {
+        if sbeta == Sign::Negative && roots.linear_over_a_at(larger, &m_q, &c_q, || signs.excess_at_zero())? == Sign::Negative {
             return Some(false);
         }
         Some(true)
