@@ -51,22 +51,24 @@ fn two_prod(a: f64, b: f64) -> (f64, f64) {
 }
 
 impl DoubleDouble {
+    /// No check for overflow here: an overflow leaves an infinite or NaN part or bound, which
+    /// every later operation keeps (an infinite part makes the next error-free sum NaN) and
+    /// which [`DoubleDouble::is_finite`] turns into "cannot tell" where a value is read.
     #[inline(always)]
     fn new(hi: f64, lo: f64, error: f64) -> DoubleDouble {
         let (hi, lo) = two_sum(hi, lo);
-        if hi.is_finite() && lo.is_finite() && !error.is_nan() && hi.abs() < 1e150 {
-            DoubleDouble {
-                hi,
-                lo,
-                error: error * SLACK,
-            }
-        } else {
-            DoubleDouble {
-                hi: 0.0,
-                lo: 0.0,
-                error: f64::INFINITY,
-            }
+        DoubleDouble {
+            hi,
+            lo,
+            error: error * SLACK,
         }
+    }
+
+    /// Whether the parts and the bound are finite and the parts small enough that no product
+    /// of two values overflowed in Dekker's splitting (`2^27 |x|` near `f64::MAX`).
+    #[inline(always)]
+    fn is_finite(&self) -> bool {
+        self.hi.abs() < 1e150 && self.lo.is_finite() && self.error.is_finite()
     }
 
     /// The nearest `f64`.
@@ -81,7 +83,8 @@ impl DoubleDouble {
     #[inline(always)]
     pub(crate) fn accurate_f64(self) -> Option<f64> {
         let value = self.hi + self.lo;
-        (self.error <= value.abs().max(1.0) * (1.0 / (1u64 << 60) as f64)).then_some(value)
+        (self.is_finite() && self.error <= value.abs().max(1.0) * (1.0 / (1u64 << 60) as f64))
+            .then_some(value)
     }
 
     #[inline(always)]
@@ -189,7 +192,9 @@ impl CertifiedSign for DoubleDouble {
     fn certified_sign(&self) -> Option<Sign> {
         // |hi + lo| >= |hi| - |lo|, and |lo| is at most half an ulp of hi.
         let size = self.hi.abs() - self.lo.abs();
-        if self.hi == 0.0 && self.lo == 0.0 && self.error == 0.0 {
+        if !self.is_finite() {
+            None
+        } else if self.hi == 0.0 && self.lo == 0.0 && self.error == 0.0 {
             Some(Sign::Zero)
         } else if size > self.error && self.hi > 0.0 {
             Some(Sign::Positive)
@@ -219,5 +224,26 @@ mod tests {
             (third * DoubleDouble::from_f64(3.0) - one).certified_sign(),
             None
         );
+    }
+
+    #[test]
+    fn an_overflow_anywhere_in_a_computation_cannot_tell() {
+        let huge = DoubleDouble::from_f64(1e200);
+        let third = DoubleDouble::from_f64(1.0) / DoubleDouble::from_f64(3.0);
+        let square = huge * huge;
+        assert_eq!(square.certified_sign(), None);
+        assert_eq!(square.accurate_f64(), None);
+        assert_eq!((square - square).certified_sign(), None);
+        assert_eq!(
+            (square * DoubleDouble::from_f64(0.0)).certified_sign(),
+            None
+        );
+        // Back in range after an overflow on the way.
+        assert_eq!(((huge * third) * huge / huge).certified_sign(), None);
+        assert_eq!(((huge * third) * huge / huge).accurate_f64(), None);
+        // Beyond 1e150 when read: products of such values could overflow in the splitting.
+        assert_eq!((huge * third).certified_sign(), None);
+        let fine = (DoubleDouble::from_f64(1e100) * third) / DoubleDouble::from_f64(1e100);
+        assert_eq!(fine.certified_sign(), Some(Sign::Positive));
     }
 }
