@@ -6,8 +6,9 @@ fresh process, REPEAT times, the backends taking turns so that a slow spell of a
 hits them alike. It keeps the fastest ``propagation_seconds`` and its decision counters, and the
 ratio to f64 both of the fastest runs and as the median over rounds of each round's ratio (the
 steadier figure on a noisy machine). Meshes: the paper's Example 4 and a 1,012-face planar grid with exact symmetries
-(generated, always present), and stanford_bunny and icosphere5 from ../shared/models when that
-folder exists (f64 and adaptive only: exact is not meant for 70k faces).
+(generated, always present), and stanford_bunny, rocker_arm, fandisk and icosphere5 from
+../shared/models when that folder exists (f64 and adaptive only: exact is not meant for 70k
+faces).
 
 Writes OUT/backends.json and OUT/backends.csv and prints a table; exit status 1 if a run fails.
 Needs only the standard library; build the CLI first (cargo build --release).
@@ -26,7 +27,7 @@ from common import BIN, MODELS, ROOT, write_rows
 def cases():
     yield "paper-example-4", "gen:paper-example-4", "v:2", ["f64", "adaptive", "exact"]
     yield "grid-22x23 (1012 faces)", "gen:grid:22,23", "v:0", ["f64", "adaptive", "exact"]
-    for name in ["stanford_bunny", "icosphere5"]:
+    for name in ["stanford_bunny", "rocker_arm", "fandisk", "icosphere5"]:
         path = os.path.join(MODELS, name + ".obj")
         if os.path.exists(path):
             yield name, path, "v:0", ["f64", "adaptive"]

@@ -574,7 +574,10 @@ pub(crate) fn crossings<T: CertifiedSign>(
         if sl != Sign::Zero && sl != sbeta {
             return Some(false);
         }
-        if sbeta == Sign::Negative && roots.linear_over_a_at(larger, &m_q, &c_q, || signs.excess_at_zero())? == Sign::Negative {
+        if sbeta == Sign::Negative
+            && roots.linear_over_a_at(larger, &m_q, &c_q, || signs.excess_at_zero())?
+                == Sign::Negative
+        {
             return Some(false);
         }
         Some(true)
