@@ -291,17 +291,21 @@ fn scaled_positions<T: CertifiedSign + Clone>(
     };
     let (ta, tb) = (scaled(a), scaled(b));
     let terms = Eq2Terms::new(&ta, &tb, &T::from_f64(lo * unit));
-    let eq2 = terms.coefficients();
     let two = T::from_f64(2.0);
+    // Only the coefficients a case's formula needs.
     Some(match crossings {
         roots::Crossings::None | roots::Crossings::Infinite => [0.0; 2],
         roots::Crossings::At(_) if terms.beta.certified_sign() == Some(Sign::Zero) => [
             accurate(-(terms.gamma.clone() / &(two * &terms.alpha)))?,
             0.0,
         ],
-        roots::Crossings::At(_) => [accurate(-(eq2.c.clone() / &eq2.b))?, 0.0],
-        roots::Crossings::Touch(_) => [accurate(-(eq2.b.clone() / &(two * &eq2.a)))?, 0.0],
+        roots::Crossings::At(_) => [accurate(-(terms.constant() / &terms.linear()))?, 0.0],
+        roots::Crossings::Touch(_) => [
+            accurate(-(terms.linear() / &(two * &terms.quadratic())))?,
+            0.0,
+        ],
         roots::Crossings::Quadratic { .. } => {
+            let eq2 = terms.coefficients();
             // B^2 - 4AC = beta^2 G G' (the source gaps): no cancellation.
             let disc = accurate(
                 terms.beta2.clone()

@@ -87,11 +87,20 @@ impl<S: Ring> Eq2Terms<S> {
         S::from_f64(0.25) * &self.gamma * &self.gamma - self.n2.clone() * &self.beta2
     }
 
+    /// `A = alpha^2 - beta^2`.
+    pub(crate) fn quadratic(&self) -> S {
+        self.alpha.clone() * &self.alpha - &self.beta2
+    }
+
+    /// `B = 2 x2 beta^2 + alpha gamma`.
+    pub(crate) fn linear(&self) -> S {
+        S::from_f64(2.0) * &self.x2 * &self.beta2 + self.alpha.clone() * &self.gamma
+    }
+
     pub(crate) fn coefficients(&self) -> Eq2Coefficients<S> {
-        let two = S::from_f64(2.0);
         Eq2Coefficients {
-            a: self.alpha.clone() * &self.alpha - &self.beta2,
-            b: two * &self.x2 * &self.beta2 + self.alpha.clone() * &self.gamma,
+            a: self.quadratic(),
+            b: self.linear(),
             c: self.constant(),
         }
     }
