@@ -214,13 +214,14 @@ fn cmp(a: f64, b: f64) -> Ordering {
 
 /// The `f64` positions of the crossings the filtered decision found, from values known to a
 /// few ulps: eq. (2)'s coefficients and its discriminant `beta^2 G G'` ([`roots::source_gap`])
-/// in `f64` with an error bound where that bound is that small (a well-conditioned root, most
-/// meetings), else in double-double or exact rationals, each rounded once; then the
-/// cancellation-free formula. A position is then good to a few ulps of its distance from the
-/// range's start, and it is kept inside the range, in order. The filter's own coefficients
+/// in double-double, or in exact rationals where that is not accurate, each rounded once; then
+/// the cancellation-free formula. A position is then good to a few ulps of its distance from
+/// the range's start, and it is kept inside the range, in order. The filter's own coefficients
 /// carry errors that it bounds for their signs only: on a near-double root or a nearly
 /// vanishing `A` they placed roots far outside the range, and the lower wedge, certain on each
-/// stretch between the exact roots, went to the wrong places.
+/// stretch between the exact roots, went to the wrong places. Nor are they accurate enough
+/// where they are certain: with their error bounds, the roots they give were known to about
+/// `2^-24` of the range's width on icosphere5, never the few ulps asked for.
 fn root_positions(
     a: &SourceDistance<Adaptive>,
     b: &SourceDistance<Adaptive>,
@@ -247,10 +248,8 @@ fn root_positions(
         .fold(hi - lo, |m, v| m.max(v.abs()));
     let unit = normalizing_power(size);
     let positions = |u: [f64; 2]| u.map(|u| (lo + u / unit).clamp(lo, hi));
-    // `f64` values with their error bounds first, taken where they are known to a few ulps
-    // (a well-conditioned root); then double-double values, known to within 2^-60 (of
-    // themselves, or absolutely below 1: the inputs are of unit size here); exact rationals
-    // where neither is accurate.
+    // Double-double values, known to within 2^-60 (of themselves, or absolutely below 1: the
+    // inputs are of unit size here); exact rationals where they are not.
     let [r, s] = scaled_positions(a, b, &crossings, lo, unit, DoubleDouble::accurate_f64)
         .unwrap_or_else(|| {
             scaled_positions(a, b, &crossings, lo, unit, |q: Q| Some(q.to_f64()))

@@ -64,8 +64,9 @@ impl DoubleDouble {
         }
     }
 
-    /// Whether the parts and the bound are finite and the parts small enough that no product
-    /// of two values overflowed in Dekker's splitting (`2^27 |x|` near `f64::MAX`).
+    /// Whether the parts and the bound are finite and the value below `1e150`: beyond that, the
+    /// product of two such values would overflow in Dekker's splitting (`2^27 |x|` near
+    /// `f64::MAX`), so such a value is not read.
     #[inline(always)]
     fn is_finite(&self) -> bool {
         self.hi.abs() < 1e150 && self.lo.is_finite() && self.error.is_finite()
