@@ -1003,6 +1003,36 @@ mod tests {
             prop_assert_eq!((at_p - &expected).certified_sign(), Some(Sign::Zero));
         }
 
+        /// The reduced excess is `A (q2(u) - beta^2) - P(u)` at every `u` (so it is
+        /// `A (q2 - beta^2)` at the roots of `P`), and [`at_zero_of`] is `P(p) m^2` at its zero
+        /// `p = -c / m`, as [`excess_at_zero`] computes it from the inputs.
+        #[test]
+        fn the_reduced_excess_and_its_zero_are_division_free_forms(
+            x1 in -2.0..2.0f64, y1 in -2.0..2.0f64, s1 in 0.0..3.0f64,
+            x2 in -2.0..2.0f64, y2 in -2.0..2.0f64, s2 in 0.0..3.0f64,
+            lo in -1.0..1.0f64, u in -3.0..3.0f64,
+        ) {
+            let (a, b) = (source(x1, y1, s1), source(x2, y2, s2));
+            let origin = Q::from_f64(lo);
+            let terms = Eq2Terms::new(&a, &b, &origin);
+            let e = terms.coefficients();
+            let excess = terms.n2.clone() - &terms.beta2;
+            let (m, c) = reduced_excess([&terms.alpha, &terms.x2, &terms.gamma, &excess], &e);
+            let u = Q::from_f64(u);
+            let p_at = |t: &Q| e.a.clone() * t * t + &(e.b.clone() * t) + &e.c;
+            let dx = u.clone() - &terms.x2;
+            let q2 = dx.clone() * &dx + &(b.y.clone() * &b.y);
+            let expected = e.a.clone() * &(q2 - &terms.beta2) - &p_at(&u);
+            let linear = m.clone() * &u + &c;
+            prop_assert_eq!((linear - &expected).certified_sign(), Some(Sign::Zero));
+            prop_assume!(m.certified_sign() != Some(Sign::Zero));
+            let p = -(c.clone() / &m);
+            let scaled = p_at(&p) * &m * &m;
+            let value = excess_at_zero(&a, &b, &origin);
+            prop_assert_eq!((scaled.clone() - &at_zero_of(&e, &m, &c)).certified_sign(), Some(Sign::Zero));
+            prop_assert_eq!((scaled - &value).certified_sign(), Some(Sign::Zero));
+        }
+
         /// At the foot of a pseudo-source on the edge's line, `P = (G / 2)^2` and
         /// `P' = -+alpha G` (minus for the first wedge's foot, plus for the second's).
         #[test]
