@@ -134,7 +134,7 @@ struct Signs<'a> {
     b: &'a SourceDistance<Adaptive>,
     ends: [f64; 2],
     /// The gaps (same side, mirrored), `P` at the start and at the end, then
-    /// [`roots::excess_at_zero`].
+    /// [`roots::excess_factor`].
     known: Cell<[Option<Sign>; 5]>,
 }
 
@@ -144,7 +144,7 @@ impl Signs<'_> {
         match at {
             0 | 1 => roots::source_gap(&a, &b, at == 1),
             2 | 3 => roots::eq2_at(&a, &b, &T::from_f64(self.ends[at - 2])),
-            _ => roots::excess_at_zero(&a, &b, &T::from_f64(self.ends[0])),
+            _ => roots::excess_factor(&a, &b),
         }
         .certified_sign()
     }
@@ -173,7 +173,7 @@ impl roots::InputSigns for Signs<'_> {
         self.sign(2 + end as usize)
     }
 
-    fn excess_at_zero(&self) -> Option<Sign> {
+    fn excess_factor(&self) -> Option<Sign> {
         self.sign(4)
     }
 }

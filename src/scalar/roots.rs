@@ -122,25 +122,25 @@ fn reduced_excess<T: Ring>(
     (m, eq2.a.clone() * excess - &eq2.c)
 }
 
-/// `P(p) m^2 = A c^2 - B c m + C m^2`, `P` at the zero `p = -c / m` of `m u + c` scaled to a
-/// polynomial: no division, which made values a filter could not tell from zero.
-fn at_zero_of<T: Ring>(eq2: &Eq2Coefficients<T>, m: &T, c: &T) -> T {
-    eq2.a.clone() * c * c - &(eq2.b.clone() * c * m) + &(eq2.c.clone() * m * m)
-}
-
-/// [`at_zero_of`] the [`reduced_excess`], with positions measured from `origin`: whether the
-/// linear form is zero left of a root of `P`, between the roots or right of both, which tells
-/// whether that root solves eq. (1) where the sigmas fall along it.
-pub(crate) fn excess_at_zero<T: Ring>(
-    a: &SourceDistance<T>,
-    b: &SourceDistance<T>,
-    origin: &T,
-) -> T {
-    let terms = Eq2Terms::new(a, b, origin);
-    let eq2 = terms.coefficients();
-    let excess = terms.n2.clone() - &terms.beta2;
-    let (m, c) = reduced_excess([&terms.alpha, &terms.x2, &terms.gamma, &excess], &eq2);
-    at_zero_of(&eq2, &m, &c)
+/// The factor of `P(p) m^2` whose sign is not known beforehand, `p = -c / m` the zero of the
+/// [`reduced_excess`] `m u + c`: `P(p) m^2 = A c^2 - B c m + C m^2 = A F1 F2 / 16` with
+/// `F1 = G G' + 4 beta^2 y1^2` (`G`, `G'` the [`source_gap`]s) and this `F2 = (alpha^2 -
+/// 9 beta^2)(alpha^2 - beta^2) + 2 alpha^2 (y1^2 + y2^2) - 6 beta^2 (y1^2 - y2^2) + (y1^2 -
+/// y2^2)^2`. Where eq. (2) has two roots, its discriminant `beta^2 G G'` is positive, so `F1` is
+/// too, and `P(p) m^2` has the sign of `A F2`. The product itself is of degree 10 and, for a
+/// vertex's wedge along its edge against the wedge that lit the vertex (`y1 = 0`, `G` near
+/// zero), as small as `G^2`: beyond double-double, so that exact rationals had to decide it
+/// (9,548 times on stanford_bunny); `F2` is of degree 4 and not small there.
+pub(crate) fn excess_factor<T: Ring>(a: &SourceDistance<T>, b: &SourceDistance<T>) -> T {
+    let alpha = b.x.clone() - &a.x;
+    let beta = b.sigma.clone() - &a.sigma;
+    let (alpha2, beta2) = (alpha.clone() * &alpha, beta.clone() * &beta);
+    let (y1, y2) = (a.y.clone() * &a.y, b.y.clone() * &b.y);
+    let dy = y1.clone() - &y2;
+    (alpha2.clone() - &(T::from_f64(9.0) * &beta2)) * &(alpha2.clone() - &beta2)
+        + &(T::from_f64(2.0) * &alpha2 * &(y1 + &y2))
+        - &(T::from_f64(6.0) * &beta2 * &dy)
+        + &(dy.clone() * &dy)
 }
 
 /// Signs that depend on the two wedges and the ends of their shared range only, which a
@@ -155,11 +155,8 @@ pub(crate) trait InputSigns {
     /// ([`eq2_at`]): near zero when the range starts where the two wedges already cross.
     fn at_end(&self, end: bool) -> Option<Sign>;
 
-    /// The sign of [`excess_at_zero`] from the range's start: near zero where a root of `P`
-    /// lies near the range's start and the pseudo-source of the first wedge on the edge's line
-    /// there (a vertex's wedge along its edge, met by the wedge that gave the vertex its
-    /// distance).
-    fn excess_at_zero(&self) -> Option<Sign> {
+    /// The sign of [`excess_factor`].
+    fn excess_factor(&self) -> Option<Sign> {
         None
     }
 
@@ -321,25 +318,24 @@ impl<T: CertifiedSign> TwoRoots<'_, T> {
     }
 
     /// The sign of `(m r + c) / A` at a root `r`, without a division: `m r + c = m (r - p)` at
-    /// `p = -c / m`, and `P(p) m^2` ([`at_zero_of`], or `decided` where `T` cannot tell its
-    /// sign) and `P'(p) m = B m - 2 A c` tell where `p` lies.
+    /// `p = -c / m`, and the signs of `P(p) m^2` (`at_p`, see [`excess_factor`]) and of
+    /// `P'(p) m = B m - 2 A c` tell where `p` lies.
     fn linear_over_a_at(
         &self,
         larger: bool,
         m: &T,
         c: &T,
-        decided: impl FnOnce() -> Option<Sign>,
+        at_p: impl FnOnce() -> Option<Sign>,
     ) -> Option<Sign> {
         let e = self.eq2;
         let sign = match m.certified_sign()? {
             Sign::Zero => c.certified_sign()?,
             sm => {
-                let at_p = at_zero_of(e, m, c).certified_sign().or_else(decided)?;
                 let slope = || {
                     let scaled = e.b.clone() * m - &(T::from_f64(2.0) * &e.a * c);
                     Some(scaled.certified_sign()?.times(sm))
                 };
-                self.root_minus_given(larger, at_p, slope)?.times(sm)
+                self.root_minus_given(larger, at_p()?, slope)?.times(sm)
             }
         };
         Some(sign.times(self.sa))
@@ -552,6 +548,14 @@ pub(crate) fn crossings<T: CertifiedSign>(
         };
         roots.root_minus_given(larger, at_p, slope)
     };
+    // The sign of P(p) m^2 at the zero p of the reduced excess: A's times that of its factor F2
+    // (the other one is positive here, with the discriminant).
+    let excess_at_p = || {
+        let factor = excess_factor(a, b)
+            .certified_sign()
+            .or_else(|| signs.excess_factor())?;
+        Some(sa.times(factor))
+    };
     let solves_assuming = |larger: bool, assumed: [Sign; 2]| -> Option<bool> {
         if at_end(larger, lo, &zero, false, assumed)? != Sign::Positive
             || at_end(larger, hi, &width, true, assumed)? != Sign::Negative
@@ -575,8 +579,7 @@ pub(crate) fn crossings<T: CertifiedSign>(
             return Some(false);
         }
         if sbeta == Sign::Negative
-            && roots.linear_over_a_at(larger, &m_q, &c_q, || signs.excess_at_zero())?
-                == Sign::Negative
+            && roots.linear_over_a_at(larger, &m_q, &c_q, excess_at_p)? == Sign::Negative
         {
             return Some(false);
         }
@@ -1004,17 +1007,16 @@ mod tests {
         }
 
         /// The reduced excess is `A (q2(u) - beta^2) - P(u)` at every `u` (so it is
-        /// `A (q2 - beta^2)` at the roots of `P`), and [`at_zero_of`] is `P(p) m^2` at its zero
-        /// `p = -c / m`, as [`excess_at_zero`] computes it from the inputs.
+        /// `A (q2 - beta^2)` at the roots of `P`), and `P` at its zero `p = -c / m`, times `m^2`,
+        /// is `A (G G' + 4 beta^2 y1^2) F2 / 16` with `F2` the [`excess_factor`].
         #[test]
-        fn the_reduced_excess_and_its_zero_are_division_free_forms(
+        fn the_reduced_excess_at_its_zero_factors(
             x1 in -2.0..2.0f64, y1 in -2.0..2.0f64, s1 in 0.0..3.0f64,
             x2 in -2.0..2.0f64, y2 in -2.0..2.0f64, s2 in 0.0..3.0f64,
             lo in -1.0..1.0f64, u in -3.0..3.0f64,
         ) {
             let (a, b) = (source(x1, y1, s1), source(x2, y2, s2));
-            let origin = Q::from_f64(lo);
-            let terms = Eq2Terms::new(&a, &b, &origin);
+            let terms = Eq2Terms::new(&a, &b, &Q::from_f64(lo));
             let e = terms.coefficients();
             let excess = terms.n2.clone() - &terms.beta2;
             let (m, c) = reduced_excess([&terms.alpha, &terms.x2, &terms.gamma, &excess], &e);
@@ -1027,10 +1029,11 @@ mod tests {
             prop_assert_eq!((linear - &expected).certified_sign(), Some(Sign::Zero));
             prop_assume!(m.certified_sign() != Some(Sign::Zero));
             let p = -(c.clone() / &m);
-            let scaled = p_at(&p) * &m * &m;
-            let value = excess_at_zero(&a, &b, &origin);
-            prop_assert_eq!((scaled.clone() - &at_zero_of(&e, &m, &c)).certified_sign(), Some(Sign::Zero));
-            prop_assert_eq!((scaled - &value).certified_sign(), Some(Sign::Zero));
+            let at_p = p_at(&p) * &m * &m;
+            let f1 = source_gap(&a, &b, false) * &source_gap(&a, &b, true)
+                + &(Q::from_f64(4.0) * &terms.beta2 * &a.y * &a.y);
+            let factored = e.a.clone() * &f1 * &excess_factor(&a, &b) / &Q::from_f64(16.0);
+            prop_assert_eq!((at_p - &factored).certified_sign(), Some(Sign::Zero));
         }
 
         /// At the foot of a pseudo-source on the edge's line, `P = (G / 2)^2` and
