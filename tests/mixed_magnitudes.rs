@@ -99,3 +99,14 @@ fn a_vertex_that_no_wedge_covers_is_traced() {
         traces_to_the_exact_distance::<Adaptive>(seed, from, to);
     }
 }
+
+/// The straight way of the arrival taken at the target passes within rounding of three
+/// pseudo-sources in a row (edges 6e8 long beside edges of 1e-6): in both float backends the
+/// walk left the mesh by a boundary edge ("lost its way near f6"), while the exact path bends
+/// at those vertices. A walk that rounding sends astray refuses the arrival taken at the vertex
+/// it last left and takes the next best there.
+#[test]
+fn a_walk_sent_astray_takes_the_next_arrival() {
+    traces_to_the_exact_distance::<f64>(17848752263870332441, 6, 21);
+    traces_to_the_exact_distance::<Adaptive>(17848752263870332441, 6, 21);
+}

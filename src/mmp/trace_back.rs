@@ -206,7 +206,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         // The vertices the walk left, in order, and a vertex to leave again with the arrivals
         // refused there.
         let mut departures: Vec<Departure<'_, S>> = Vec::new();
-        let mut retry: Option<(VertexId, Vec<&Wedge<S>>)> = None;
+        let mut retry: Retry<'_, S> = None;
         let budget = 4 * self.mesh().face_count() + 16;
         for _ in 0..budget {
             let pseudo_source = match via {
@@ -276,11 +276,26 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     at,
                 } => {
                     let w = &self.wedges.on(edge)[wedge];
-                    let end = match self.enter(edge, wedge, face, at, start, &mut simplices)? {
-                        Step::Walk(walk) => {
-                            self.walk_to(walk, w.pseudo_source, &mut simplices, budget)?
+                    let walked = self
+                        .enter(edge, wedge, face, at, start, &mut simplices)
+                        .and_then(|step| match step {
+                            Step::Walk(walk) => {
+                                self.walk_to(walk, w.pseudo_source, &mut simplices, budget)
+                            }
+                            Step::Vertex(v) => Ok(WalkEnd::Vertex(v)),
+                        });
+                    let end = match walked {
+                        Ok(end) => end,
+                        // Rounding sent the walk astray from the arrival taken at the vertex
+                        // last left (a near tie with another way): that arrival is refused
+                        // there and the next best taken; any way is still checked against
+                        // the distance.
+                        Err(lost @ TraceError::Lost { .. }) => {
+                            let d = departures.pop().ok_or(lost)?;
+                            (via, retry) = refuse(d, &mut simplices);
+                            continue;
                         }
-                        Step::Vertex(v) => WalkEnd::Vertex(v),
+                        Err(error) => return Err(error),
                     };
                     match end {
                         WalkEnd::PseudoSource => w.pseudo_source,
@@ -311,15 +326,12 @@ impl<S: Scalar> GeodesicField<'_, S> {
                     // loop, the arrival taken at the nearest vertex to the sources cannot be
                     // right (it goes by vertices no nearer): it is refused there, and the trail
                     // taken up again from that vertex.
-                    let mut d = self
+                    let d = self
                         .loop_departure(u, &mut departures, tie)
                         .ok_or_else(|| TraceError::Lost {
                             near: format!("{u}"),
                         })?;
-                    simplices.truncate(d.trail_len);
-                    d.refused.push(d.chosen);
-                    via = Via::Vertex(d.vertex);
-                    retry = Some((d.vertex, d.refused));
+                    (via, retry) = refuse(d, &mut simplices);
                     continue;
                 }
             }
@@ -826,6 +838,18 @@ impl<S: Scalar> GeodesicField<'_, S> {
         None
     }
 }
+
+/// Takes the walk up again at the vertex of departure `d`, refusing the arrival chosen there:
+/// the trail back to before the vertex, the way to go on by, and the vertex with the arrivals
+/// refused at it.
+fn refuse<'a, S: Scalar>(mut d: Departure<'a, S>, trail: &mut Trail<S>) -> (Via<S>, Retry<'a, S>) {
+    trail.truncate(d.trail_len);
+    d.refused.push(d.chosen);
+    (Via::Vertex(d.vertex), Some((d.vertex, d.refused)))
+}
+
+/// A vertex to leave again, with the arrivals refused there.
+type Retry<'a, S> = Option<(VertexId, Vec<&'a Wedge<S>>)>;
 
 /// A point of a trail and, on an edge, its offset along the edge in the number type.
 type TrailPoint<S> = (SurfacePoint, Option<S>);
