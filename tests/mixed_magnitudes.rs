@@ -67,6 +67,10 @@ mixed_magnitudes! {
     // The corpus's seed 3: a wedge lower by 3e-6 on a range 5e8 long lost it to a tie at the
     // range's middle, where the distances are 2.5e8; adaptive 1.0 (1.5e-7) long at v6.
     seed_13911246744053453373_long_ranges_go_to_the_lower_wedge: 13911246744053453373, 79, 6;
+    // A vertex 1e-7 from an edge 5e6 long: the stretch of that edge its wedge won, 4e-6 wide,
+    // was dropped as narrower than the edge's resolution, and the geodesics it fans out into
+    // the faces beyond with it; f64 0.27 (1.3e-9) long at v55.
+    seed_3925575493033055441_narrow_stretches_near_their_pseudo_source: 3925575493033055441, 37, 38;
 }
 
 /// The shortest path from `from` to `to` on the mixed-magnitude mesh of `seed`, traced in `S`:

@@ -524,7 +524,7 @@ pub fn intersect<S: Scalar>(
     arriving: &Wedge<S>,
 ) -> (Vec<Wedge<S>>, Eq2Counts) {
     let mut counts = Eq2Counts::default();
-    if !S::has_extent(&arriving.b0, &arriving.b1, edge_length) {
+    if !arriving.has_extent_on(&arriving.b0, &arriving.b1, edge_length) {
         return (existing.to_vec(), counts);
     }
     let overlaps = |old: &Wedge<S>| {
@@ -551,13 +551,13 @@ pub fn intersect<S: Scalar>(
     let first = existing.iter().position(overlaps).unwrap_or(existing.len());
     let mut result: Vec<Wedge<S>> = existing[..first].to_vec();
     for piece in pieces {
-        if !S::has_extent(&piece.lo, &piece.hi, edge_length) {
-            continue;
-        }
         let mut wedge = match piece.owner.old_id() {
             None => arriving.clone(),
             Some(i) => existing[i as usize].clone(),
         };
+        if !wedge.has_extent_on(&piece.lo, &piece.hi, edge_length) {
+            continue;
+        }
         wedge.b0 = piece.lo;
         wedge.b1 = piece.hi;
         result.push(wedge);

@@ -92,6 +92,18 @@ pub(crate) trait WedgeFields<S> {
             S::min_of(&d.at(b0), &d.at(b1))
         }
     }
+
+    /// Whether `[lo, hi]`, a stretch of this wedge's range on an edge of length `length`, is
+    /// long enough to be a wedge of its own: by the edge's resolution
+    /// ([`Scalar::has_extent`]), or because the pseudo-source sees it under a wide angle
+    /// ([`Scalar::fans_out`]).
+    #[inline]
+    fn has_extent_on(&self, lo: &S, hi: &S, length: &S) -> bool
+    where
+        S: Scalar,
+    {
+        S::has_extent(lo, hi, length) || S::fans_out(lo, hi, self.source_x(), self.source_y())
+    }
 }
 
 /// Implements [`WedgeFields`] for a type that stores the wedge's fields under their names.

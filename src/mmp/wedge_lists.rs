@@ -349,7 +349,7 @@ impl<S: Scalar> WedgeLists<S> {
             what: "wedge intersection (eq. 2)",
         });
         let closed = self.closed.as_ref().is_some_and(|c| c[e.index()]);
-        if closed || !S::has_extent(&w.b0, &w.b1, length) {
+        if closed || !w.has_extent_on(&w.b0, &w.b1, length) {
             return;
         }
         let list = &self.lists[e.index()];
@@ -465,7 +465,14 @@ impl<S: Scalar> WedgeLists<S> {
                     }
                 }
             }
-            if !S::has_extent(&piece.lo, &piece.hi, length) {
+            let (lo, hi) = (&piece.lo, &piece.hi);
+            // The owner is read only for a piece too short for the edge.
+            let extent = S::has_extent(lo, hi, length)
+                || match piece.owner.old_id() {
+                    None => w.has_extent_on(lo, hi, length),
+                    Some(k) => list[first + k as usize].has_extent_on(lo, hi, length),
+                };
+            if !extent {
                 continue;
             }
             // The strips of the wedges whose own range ends are the piece's ends.

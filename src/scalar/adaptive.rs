@@ -373,6 +373,12 @@ impl Scalar for Adaptive {
         hi.0 - lo.0 > Resolution::EXTENT * scale.0
     }
 
+    /// As `f64` does ([`float::fans_out`]).
+    #[inline(always)]
+    fn fans_out(lo: &Self, hi: &Self, x: &Self, y: &Self) -> bool {
+        float::fans_out(lo.0, hi.0, x.0, y.0)
+    }
+
     /// At the resolution of the range's ends ([`Resolution::WITHIN`]): the ends are
     /// constructions, and two wedges whose ranges meet at a ray through a vertex (exactly, on
     /// the surface) meet with a gap or overlap of a few ulps once rounded; a vertex in such a

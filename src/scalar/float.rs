@@ -125,6 +125,11 @@ impl Scalar for f64 {
     }
 
     #[inline(always)]
+    fn fans_out(lo: &Self, hi: &Self, x: &Self, y: &Self) -> bool {
+        fans_out(*lo, *hi, *x, *y)
+    }
+
+    #[inline(always)]
     fn within(x: &Self, lo: &Self, hi: &Self, scale: impl FnOnce() -> Self) -> bool {
         let slack = FloatTolerance::WITHIN * scale();
         *x >= lo - slack && *x <= hi + slack
@@ -189,6 +194,21 @@ impl Scalar for f64 {
         }
         Bisector { roots, lower }
     }
+}
+
+/// Whether the range `[lo, hi]` is wider than its farther end's distance from the
+/// pseudo-source at `(x, y)`: its rays then spread by more than half a right angle, however
+/// short the range is beside its edge ([`FloatTolerance::EXTENT`] drops ranges as
+/// numerically parallel rays by the edge's length alone). Through 4e-6 of an edge 5e6 long,
+/// a vertex 1e-7 from it (the middle corner of a nearly degenerate face) fans out the
+/// geodesics into the faces beyond that nothing else reaches; dropped, they left distances
+/// there 0.27 long (mixed magnitudes). A range seen from afar keeps the edge's resolution:
+/// where near-ties cut it, its ends are known no better. Compared squared (no root; squares
+/// that overflow or underflow only keep the edge's resolution).
+#[inline(always)]
+pub(crate) fn fans_out(lo: f64, hi: f64, x: f64, y: f64) -> bool {
+    let (width, far) = (hi - lo, (x - lo).abs().max((x - hi).abs()));
+    width > 0.0 && width * width > far * far + y * y
 }
 
 /// Which of `a`, `b` is lower on the stretch `[start, end]` of the range `[lo, hi]`: at its
@@ -407,6 +427,18 @@ mod tests {
         let eq2 = Eq2Coefficients::new(&a, &b, &0.0);
         assert!(eq2.a.abs() < 1e-15 && eq2.b.abs() < 1e-15 && eq2.c.abs() > 1e-3);
         assert_eq!(f64::bisector_roots(&a, &b, &0.5, &1.0), BisectorRoots::None);
+    }
+
+    #[test]
+    fn a_range_fans_out_only_when_wider_than_its_distance_from_the_source() {
+        // 4e-6 wide, the source 1e-7 off its middle: rays spread over most of a half-turn.
+        assert!(fans_out(0.499994, 0.499998, 0.499996, 1e-7));
+        // The same width 4000 away: numerically parallel at an edge's resolution.
+        assert!(!fans_out(0.499994, 0.499998, 0.499996, 4000.0));
+        assert!(!fans_out(0.499994, 0.499998, -4000.0, 0.0));
+        // Empty or reversed ranges never, wherever the source.
+        assert!(!fans_out(1.0, 1.0, 1.0, 0.0));
+        assert!(!fans_out(1.0, 0.5, 0.75, 0.0));
     }
 
     #[test]

@@ -190,6 +190,14 @@ pub trait Scalar: Field {
     /// Whether `[lo, hi]` on an edge of length `scale` is long enough to be a wedge of its own.
     fn has_extent(lo: &Self, hi: &Self, scale: &Self) -> bool;
 
+    /// Whether `[lo, hi]`, too short for its edge by [`Scalar::has_extent`], is still a wedge
+    /// of its own because its pseudo-source, at `(x, y)` in the edge's frame, sees it under a
+    /// wide angle: a number type that drops short ranges as numerically parallel rays says
+    /// which are not. `false` for number types whose `has_extent` drops only empty ranges.
+    fn fans_out(_lo: &Self, _hi: &Self, _x: &Self, _y: &Self) -> bool {
+        false
+    }
+
     /// Whether `x` lies in `[lo, hi]` (closed range), where `scale` gives the size of the
     /// offsets `x` and the range's ends are constructed from (an edge's length at most); only
     /// a number type that rounds those constructions evaluates it.
