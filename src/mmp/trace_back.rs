@@ -178,25 +178,25 @@ impl<S: Scalar> GeodesicField<'_, S> {
         &self,
         target: &SurfacePoint,
     ) -> Result<(GeodesicPath, Trail<S>, S), TraceError> {
-        let attempt = |tie| {
-            let (trail, distance, source) = self.trace(target, tie)?;
-            let path = self.path_of(&trail, &distance, source)?;
-            Ok((path, trail, distance))
-        };
-        attempt(LoopTie::Latest).or_else(|error| match error {
-            TraceError::Lost { .. } | TraceError::NotShortest { .. } => {
-                attempt(LoopTie::First).map_err(|_| error)
-            }
-            _ => Err(error),
-        })
+        self.trace(target, LoopTie::Latest)
+            .or_else(|error| match error {
+                TraceError::Lost { .. } | TraceError::NotShortest { .. } => {
+                    self.trace(target, LoopTie::First).map_err(|_| error)
+                }
+                _ => Err(error),
+            })
     }
 
-    /// The path's trail, the target's distance (scaled units) and the source it ends at.
+    /// The path, its trail and the target's distance (scaled units). A walk that rounding
+    /// sends astray (lost, or by a way whose length is not the distance: a near tie with
+    /// another way, decided at the backend's resolution) backs off to the vertex it last left,
+    /// refuses the arrival taken there and takes the next best, backing off further where none
+    /// is left; the first error is the answer if every way fails.
     fn trace(
         &self,
         target: &SurfacePoint,
         tie: LoopTie,
-    ) -> Result<(Trail<S>, S, SourceId), TraceError> {
+    ) -> Result<(GeodesicPath, Trail<S>, S), TraceError> {
         let target = target.validated(self.mesh())?;
         let best = self.best_at(&target).ok_or(TraceError::Unreachable)?;
         let distance = best.distance;
@@ -207,6 +207,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
         // refused there.
         let mut departures: Vec<Departure<'_, S>> = Vec::new();
         let mut retry: Retry<'_, S> = None;
+        let mut first_error = None;
         let budget = 4 * self.mesh().face_count() + 16;
         for _ in 0..budget {
             let pseudo_source = match via {
@@ -237,24 +238,33 @@ impl<S: Scalar> GeodesicField<'_, S> {
                         .find_map(|(i, &(u, _))| self.source_at_vertex(u).map(|k| (i, k)))
                     {
                         hop(&mut simplices, i);
-                        return Ok((simplices, distance, k));
+                        match self.path_of(&simplices, &distance, k) {
+                            Ok(path) => return Ok((path, simplices, distance)),
+                            Err(error) => {
+                                let back = (&mut departures, &mut first_error);
+                                (via, retry) = back_off(back, &mut simplices, error)?;
+                                continue;
+                            }
+                        }
                     }
-                    let (i, arrival) = twins
+                    let Some((i, arrival)) = twins
                         .iter()
                         .enumerate()
                         .filter_map(|(i, &(u, _))| {
                             self.arrival_at_vertex(u, &twins, &refused).map(|b| (i, b))
                         })
                         .min_by(|(_, a), (_, b)| self.better_arrival(a, b))
-                        .ok_or_else(|| {
-                            if refused.is_empty() {
-                                TraceError::Unreachable
-                            } else {
-                                TraceError::Lost {
-                                    near: format!("{v}"),
-                                }
-                            }
-                        })?;
+                    else {
+                        if refused.is_empty() {
+                            return Err(TraceError::Unreachable);
+                        }
+                        let lost = TraceError::Lost {
+                            near: format!("{v}"),
+                        };
+                        let back = (&mut departures, &mut first_error);
+                        (via, retry) = back_off(back, &mut simplices, lost)?;
+                        continue;
+                    };
                     hop(&mut simplices, i);
                     let u = twins[i].0;
                     if let Via::Wedge { edge, wedge, .. } = arrival.via {
@@ -291,8 +301,8 @@ impl<S: Scalar> GeodesicField<'_, S> {
                         // there and the next best taken; any way is still checked against
                         // the distance.
                         Err(lost @ TraceError::Lost { .. }) => {
-                            let d = departures.pop().ok_or(lost)?;
-                            (via, retry) = refuse(d, &mut simplices);
+                            let back = (&mut departures, &mut first_error);
+                            (via, retry) = back_off(back, &mut simplices, lost)?;
                             continue;
                         }
                         Err(error) => return Err(error),
@@ -338,14 +348,20 @@ impl<S: Scalar> GeodesicField<'_, S> {
             match pseudo_source {
                 PseudoSource::Source(k) => {
                     simplices.push(self.sources[k.index()]);
-                    return Ok((simplices, distance, k));
+                    match self.path_of(&simplices, &distance, k) {
+                        Ok(path) => return Ok((path, simplices, distance)),
+                        Err(error) => {
+                            let back = (&mut departures, &mut first_error);
+                            (via, retry) = back_off(back, &mut simplices, error)?;
+                        }
+                    }
                 }
                 PseudoSource::Vertex(v) => via = Via::Vertex(v),
             }
         }
-        Err(TraceError::Lost {
+        Err(first_error.unwrap_or_else(|| TraceError::Lost {
             near: format!("{:?}", simplices.points.last()),
-        })
+        }))
     }
 
     /// The path of a trail in space, checked against the distance ([`TRACE_LENGTH`]).
@@ -846,6 +862,20 @@ fn refuse<'a, S: Scalar>(mut d: Departure<'a, S>, trail: &mut Trail<S>) -> (Via<
     trail.truncate(d.trail_len);
     d.refused.push(d.chosen);
     (Via::Vertex(d.vertex), Some((d.vertex, d.refused)))
+}
+
+/// Backs off from `error` to the latest of the `departures`, refusing the arrival taken there
+/// ([`refuse`]); the first error met (kept in `first`) if none is left.
+fn back_off<'a, S: Scalar>(
+    (departures, first): (&mut Vec<Departure<'a, S>>, &mut Option<TraceError>),
+    trail: &mut Trail<S>,
+    error: TraceError,
+) -> Result<(Via<S>, Retry<'a, S>), TraceError> {
+    let first = first.get_or_insert(error);
+    match departures.pop() {
+        Some(d) => Ok(refuse(d, trail)),
+        None => Err(first.clone()),
+    }
 }
 
 /// A vertex to leave again, with the arrivals refused there.
