@@ -4,6 +4,7 @@
 
 use super::paths::Path;
 use super::provenance::keeps_values;
+use super::shadow::Arrival;
 use super::source::SurfacePoint;
 use super::unfold::Unfolding;
 use super::wedge::{Wedge, WedgeFields};
@@ -99,6 +100,8 @@ pub(crate) struct Front<S: Scalar> {
     vertices: Vec<Option<VertexDistance<S>>>,
     /// Whether a vertex's distance improved since it last acted as a pseudo-source.
     pending_emission: Vec<bool>,
+    /// The straight way by which each vertex got its distance, where it came from a wedge.
+    arrivals: Vec<Option<Arrival>>,
     queue: BinaryHeap<Event>,
     /// Edges to close, apart from the events so that they do not change the order in which
     /// events of equal keys leave `queue` (ties that the vertices' last bits depend on).
@@ -115,6 +118,7 @@ impl<S: Scalar> Front<S> {
         Front {
             vertices: vec![None; vertex_count],
             pending_emission: vec![false; vertex_count],
+            arrivals: vec![None; vertex_count],
             queue: BinaryHeap::new(),
             closing: BinaryHeap::new(),
             reached: 0,
@@ -176,6 +180,11 @@ impl<S: Scalar> Front<S> {
             .then(|| (known.distance.clone(), known.source, known.path.clone()))
     }
 
+    /// The straight way by which a vertex got its present distance from a wedge, if it did.
+    pub(crate) fn arrival(&self, v: VertexId) -> Option<&Arrival> {
+        self.arrivals[v.index()].as_ref()
+    }
+
     /// Marks a vertex as having acted as a pseudo-source at its present distance.
     pub(crate) fn emitted(&mut self, v: VertexId) {
         self.pending_emission[v.index()] = false;
@@ -200,6 +209,7 @@ impl<S: Scalar> Front<S> {
             Some(_) => {}
             None => self.reached += 1,
         }
+        self.arrivals[v.index()] = None;
         let approx = distance.to_f64();
         let twin_distance = unfolding.has_twin(v).then(|| distance.clone());
         let twin_path = twin_distance.as_ref().map(|_| path.clone());
@@ -227,17 +237,23 @@ impl<S: Scalar> Front<S> {
 
     /// A wedge's distance `d` at the vertex `v`, offered to it: no lower than its pseudo-source's
     /// straight line to `v` in space, where the backend repairs rounding ([`Scalar::at_least`]).
-    /// `path` is the path of the wedge's distance there, if kept. Whether it lowered the
-    /// vertex's distance.
+    /// `path` is the path of the wedge's distance there, if kept; `straight`: whether the way
+    /// is straight from the pseudo-source's image (else it bends at a range end, see
+    /// `rounded_gap.rs`), and so is the vertex's [`Arrival`]. Whether it lowered the vertex's
+    /// distance.
     pub(crate) fn offer_vertex(
         &mut self,
         (mesh, unfolding, sources): (&TriMesh, &Unfolding<S>, &[SurfacePoint]),
         v: VertexId,
         (d, path): (S, S::Kept<Path>),
-        w: &Wedge<S>,
+        (w, straight): (&Wedge<S>, bool),
     ) -> bool {
         let d = S::at_least(d, || unfolding.straight_bound(mesh, w, v, sources));
-        self.improve_vertex((mesh, unfolding), v, d, (w.source, path))
+        let improved = self.improve_vertex((mesh, unfolding), v, d, (w.source, path));
+        if improved && straight {
+            self.arrivals[v.index()] = Some(Arrival::of(w));
+        }
+        improved
     }
 
     /// The vertices' distances at the end of a run, those beyond `max` (the run's maximum

@@ -17,6 +17,7 @@ mod provenance;
 mod query;
 mod region_runs;
 mod rounded_gap;
+mod shadow;
 mod source;
 mod stats;
 mod stop;

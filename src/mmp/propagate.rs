@@ -11,6 +11,7 @@ use super::paths::{continued, CongruentPaths, Path};
 use super::planar::Planar;
 use super::provenance::{keeps_values, Anchor, Light, Provenance};
 use super::rounded_gap::{distance_through, end_beside};
+use super::shadow::Shadow;
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
 use super::stop::StopPoints;
@@ -274,7 +275,7 @@ impl<S: Scalar> Arrivals<S> for Reach<'_, S> {
     fn reach(&mut self, v: VertexId, d: S, (w, kept): (&Wedge<S>, &Provenance<S>)) {
         let surface = (self.mesh, self.unfolding, self.sources);
         let path = continued::<S>(&kept.path, |p| p.to(v));
-        self.front.offer_vertex(surface, v, (d, path), w);
+        self.front.offer_vertex(surface, v, (d, path), (w, true));
     }
 
     fn congruence(&self) -> Option<(&TriMesh, &CongruentPaths<S>)> {
@@ -364,7 +365,12 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 EventKind::Vertex(v) => {
                     if let Some((sigma, source, path)) = self.front.take_emission(v) {
                         self.stats.pseudo_source_emissions += 1;
-                        self.emit_from_vertex(v, (sigma, path), PseudoSource::Vertex(v), source);
+                        let shadow = self
+                            .front
+                            .arrival(v)
+                            .and_then(|a| Shadow::new(self.mesh, &self.unfolding, v, a));
+                        let from = (PseudoSource::Vertex(v), source, shadow);
+                        self.emit_from_vertex(v, (sigma, path), from);
                     }
                 }
             }
@@ -455,8 +461,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
     }
 
     /// A wedge's distance `d` at the vertex `v` (the length of `path`, if kept), offered to it
-    /// ([`Front::offer_vertex`]); whether it lowered the vertex's distance.
-    fn offer_vertex(&mut self, v: VertexId, d: (S, S::Kept<Path>), w: &Wedge<S>) -> bool {
+    /// ([`Front::offer_vertex`]; `straight`: whether the way is straight from the wedge's
+    /// pseudo-source); whether it lowered the vertex's distance.
+    fn offer_vertex(&mut self, v: VertexId, d: (S, S::Kept<Path>), w: (&Wedge<S>, bool)) -> bool {
         let surface = (self.mesh, &self.unfolding, self.sources.as_slice());
         self.front.offer_vertex(surface, v, d, w)
     }
@@ -505,7 +512,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     fn emit_source_vertex(&mut self, v: VertexId, k: SourceId) {
         let path = self.source_path(v);
         self.improve_vertex(v, S::zero(), (k, path.clone()));
-        self.emit_from_vertex(v, (S::zero(), path), PseudoSource::Source(k), k);
+        self.emit_from_vertex(v, (S::zero(), path), (PseudoSource::Source(k), k, None));
         self.front.emitted(v);
     }
 
@@ -561,8 +568,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         &mut self,
         v: VertexId,
         (sigma, path): (S, S::Kept<Path>),
-        source: PseudoSource,
-        k: SourceId,
+        (source, k, shadow): (PseudoSource, SourceId, Option<Shadow>),
     ) {
         let mesh = self.mesh;
         let mut beyond = Vec::new();
@@ -602,7 +608,14 @@ impl<'m, S: Scalar> Engine<'m, S> {
         // edges they carry its distance on the boundary line, where a float backend's rays
         // from farther back graze the boundary.
         let across = matches!(source, PseudoSource::Source(_)) || !mesh.is_flat_vertex(v);
-        for &f in mesh.vertex_faces(v).iter().filter(|_| across) {
+        // Only into the vertex's shadow, where it has one (`shadow.rs`).
+        let into_face = |f: FaceId| shadow.as_ref().is_none_or(|s| s.meets_face(f));
+        let along_edge = |u: VertexId| shadow.as_ref().is_none_or(|s| s.meets_edge(u));
+        for &f in mesh
+            .vertex_faces(v)
+            .iter()
+            .filter(|&&f| across && into_face(f))
+        {
             let corner = mesh.face(f).iter().position(|&c| c == v).expect("corner");
             let g = mesh.face_edges(f)[(corner + 1) % 3];
             let side = mesh.side_of(g, f).expect("edge of the face");
@@ -628,6 +641,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
             self.add_wedge(g, at, side, sigma.clone(), (source, k), kept);
         }
         for &g in mesh.vertex_edges(v) {
+            if !mesh.edge(g).other(v).is_none_or(along_edge) {
+                continue;
+            }
             let x = if self.unfolding.ends(mesh, g)[0] == v {
                 S::zero()
             } else {
@@ -1006,11 +1022,11 @@ impl<'m, S: Scalar> Engine<'m, S> {
             children[1] = Some((far, positions, at, kept));
         }
         if let Some((v, d)) = apex {
-            self.offer_vertex(v, (d, apex_path), w);
+            self.offer_vertex(v, (d, apex_path), (w, true));
         } else if let Some(end) = end_beside(w, || shadow.clone(), length) {
             // An apex in a gap that rounding left beside the range (see `rounded_gap.rs`).
             let d = distance_through(w, end, (layout.apex_x, layout.apex_h));
-            if self.offer_vertex(layout.apex_vertex(), (d, apex_path), w) {
+            if self.offer_vertex(layout.apex_vertex(), (d, apex_path), (w, false)) {
                 self.stats.rounded_gap_offers += 1;
             }
         }
