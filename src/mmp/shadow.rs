@@ -82,13 +82,19 @@ impl Shadow {
         let (neighbours, faces) = fan(mesh, v)?;
         let (u, f, angle) = arrival_direction(mesh, unfolding, v, arrival)?;
         let i = neighbours.iter().position(|n| n.0 == u)?;
-        let incoming = if faces[i].0 == f {
-            neighbours[i].1 + angle
-        } else if faces[(i + faces.len() - 1) % faces.len()].0 == f {
-            neighbours[i].1 - angle
+        let before = (i + faces.len() - 1) % faces.len();
+        let (incoming, corner) = if faces[i].0 == f {
+            (neighbours[i].1 + angle, faces[i].2)
+        } else if faces[before].0 == f {
+            (neighbours[i].1 - angle, faces[before].2)
         } else {
             return None;
         };
+        // The way crossed `f` to the vertex, so it arrives within `f`'s corner; a way along an
+        // edge's line from beyond the vertex (rounding) says nothing of the side.
+        if angle.is_nan() || angle > corner + MARGIN {
+            return None;
+        }
         Self::around((neighbours, faces), incoming)
     }
 
