@@ -5,7 +5,7 @@ mod common;
 
 use exact_geodesics::mesh::shapes::{self, SplitMix64};
 use exact_geodesics::paper::examples::{
-    eq2_of, unfold_named, EXAMPLE1, EXAMPLE1_EDGE, EXAMPLE3, EXAMPLE3_EDGE,
+    eq2_of, unfold_named, EXAMPLE1, EXAMPLE1_EDGE, EXAMPLE3, EXAMPLE3_EDGE, EXAMPLE3_MIRRORS,
 };
 use exact_geodesics::scalar::exact::{Certificate, Integer, Rational, Uncertainty, ZeroProof};
 use exact_geodesics::scalar::{
@@ -187,13 +187,28 @@ fn example1_symmetric_wedges_are_certified_infinite_in_the_exact_backend() {
     assert!(infinite_on_e2 || stats.wedges_offered_again > 0);
 }
 
-fn example3_in<S: Scalar>() {
+fn example3_in<S: Scalar>(exact: bool) {
     let mesh = shapes::paper_example3();
     let w = unfold_named::<S>(&mesh, &EXAMPLE3, EXAMPLE3_EDGE, |_| S::zero());
     let pair = eq2_of(&w, 0, 1).expect("w1 and w2 share e0");
     match pair.roots {
         BisectorRoots::One(t) => assert!((t.to_f64() - 0.5f64.sqrt()).abs() < 1e-12),
         other => panic!("{other:?}"),
+    }
+    // Each of w1, w2 ties with its mirror image from the other side of e0: the same images
+    // (to rounding in the float backends, unfolded through different faces), and in the exact
+    // backend eq. (2) has infinitely many solutions.
+    let mirrors = unfold_named::<S>(&mesh, &EXAMPLE3_MIRRORS, EXAMPLE3_EDGE, |_| S::zero());
+    for i in 0..2 {
+        assert_ne!(w[i].face, mirrors[i].face);
+        let (f, g) = (w[i].distance_function(), mirrors[i].distance_function());
+        assert!((f.x.to_f64() - g.x.to_f64()).abs() < 1e-15);
+        assert!((f.y.to_f64().abs() - g.y.to_f64().abs()).abs() < 1e-15);
+        if exact {
+            let both = [w[i].clone(), mirrors[i].clone()];
+            let tie = eq2_of(&both, 0, 1).expect("a wedge and its mirror share e0");
+            assert!(matches!(tie.roots, BisectorRoots::Infinite), "w{}", i + 1);
+        }
     }
     let field = propagate::<S>(
         &mesh,
@@ -210,15 +225,21 @@ fn example3_in<S: Scalar>() {
         .filter(|w| w.b1.to_f64() - w.b0.to_f64() > 1e-9)
         .collect();
     assert_eq!(finals.len(), 2);
-    assert_ne!(finals[0].tau, finals[1].tau);
     assert!((finals[0].b1.to_f64() - 0.5f64.sqrt()).abs() < 1e-12);
+    // The final wedges are w1's and w2's distance functions, from whichever side of each tied
+    // pair came first.
+    for (f, w) in finals.iter().zip(&w) {
+        let (f, g) = (f.distance_function(), w.distance_function());
+        assert!((f.x.to_f64() - g.x.to_f64()).abs() < 1e-12);
+        assert!((f.y.to_f64().abs() - g.y.to_f64().abs()).abs() < 1e-12);
+    }
 }
 
 #[test]
 fn example3_one_solution_from_both_sides_in_every_backend() {
-    example3_in::<f64>();
-    example3_in::<Adaptive>();
-    example3_in::<Real>();
+    example3_in::<f64>(false);
+    example3_in::<Adaptive>(false);
+    example3_in::<Real>(true);
 }
 
 /// Vertex distances of the three backends agree to 1e-12 relative.

@@ -5,7 +5,8 @@ use exact_geodesics::glam::DVec2;
 use exact_geodesics::mesh::io::{read_path, ReadOptions};
 use exact_geodesics::mesh::shapes;
 use exact_geodesics::paper::examples::{
-    eq2_of, unfold_named, EXAMPLE1, EXAMPLE1_EDGE, EXAMPLE2, EXAMPLE2_EDGE, EXAMPLE3, EXAMPLE3_EDGE,
+    eq2_of, unfold_named, EXAMPLE1, EXAMPLE1_EDGE, EXAMPLE2, EXAMPLE2_EDGE, EXAMPLE3,
+    EXAMPLE3_EDGE, EXAMPLE3_MIRRORS,
 };
 use exact_geodesics::paper::strip::StripWedge;
 use exact_geodesics::paper::table::face_rows;
@@ -168,8 +169,23 @@ fn example3_wedges_meet_once_from_both_sides() {
         other => panic!("{other:?}"),
     }
     assert_ne!(w[0].face, w[1].face);
-    // The engine: two final wedges meeting at the midpoint, from different sides, distance
-    // sqrt(2.5) at both ends and 2 at the midpoint.
+    // The mirror images of w1 and w2 (x <-> y) come from the other side of e0 with the same
+    // distance function: eq. (2) has infinitely many solutions.
+    let mirrors = unfold_named(&mesh, &EXAMPLE3_MIRRORS, EXAMPLE3_EDGE, |_| 0.0);
+    for i in 0..2 {
+        assert_ne!(w[i].face, mirrors[i].face);
+        let both = [w[i].clone(), mirrors[i].clone()];
+        let tie = eq2_of(&both, 0, 1).expect("shared range");
+        assert_eq!(
+            tie.roots,
+            BisectorRoots::Infinite,
+            "w{} and its mirror",
+            i + 1
+        );
+    }
+    // The engine: two final wedges meeting at the midpoint, distance sqrt(2.5) at both ends and
+    // 2 at the midpoint; each is w1's or w2's, from the side of whichever of the tied pair came
+    // first.
     let field = field_from(&mesh, 0);
     let edge = mesh
         .edge_between(VertexId(5), VertexId(7))
@@ -177,7 +193,6 @@ fn example3_wedges_meet_once_from_both_sides() {
     let finals = field.wedges(edge);
     assert_eq!(finals.len(), 2);
     close(finals[0].b1, half, 1e-9, "split");
-    assert_ne!(finals[0].tau, finals[1].tau);
     close(
         finals[0].d0() + finals[0].sigma,
         2.5f64.sqrt(),
@@ -185,14 +200,10 @@ fn example3_wedges_meet_once_from_both_sides() {
         "d(v5)",
     );
     close(finals[0].d1(), 2.0, 1e-9, "midpoint");
-    // Each final wedge has the distance function of w1 or w2 (or of its mirror image across
-    // e0, which the symmetry x <-> y makes equally short).
-    for f in finals {
-        let g = f.distance_function();
-        assert!(w.iter().any(|s| {
-            let h = s.distance_function();
-            (h.x - g.x).abs() < 1e-9 && (h.y - g.y).abs() < 1e-9
-        }));
+    for (f, w) in finals.iter().zip(&w) {
+        let (f, g) = (f.distance_function(), w.distance_function());
+        close(f.x, g.x, 1e-12, "image along e0");
+        close(f.y.abs(), g.y.abs(), 1e-12, "image's distance from e0");
     }
 }
 

@@ -4,6 +4,7 @@
 
 use super::paths::Path;
 use super::provenance::keeps_values;
+use super::radix_queue::RadixQueue;
 use super::shadow::Arrival;
 use super::source::SurfacePoint;
 use super::unfold::Unfolding;
@@ -102,7 +103,7 @@ pub(crate) struct Front<S: Scalar> {
     pending_emission: Vec<bool>,
     /// The straight way by which each vertex got its distance, where it came from a wedge.
     arrivals: Vec<Option<Arrival>>,
-    queue: BinaryHeap<Event>,
+    queue: RadixQueue<EventKind>,
     /// Edges to close, apart from the events so that they do not change the order in which
     /// events of equal keys leave `queue` (ties that the vertices' last bits depend on).
     closing: BinaryHeap<Closing>,
@@ -119,7 +120,7 @@ impl<S: Scalar> Front<S> {
             vertices: vec![None; vertex_count],
             pending_emission: vec![false; vertex_count],
             arrivals: vec![None; vertex_count],
-            queue: BinaryHeap::new(),
+            queue: RadixQueue::new(),
             closing: BinaryHeap::new(),
             reached: 0,
             peak_queue: 0,
@@ -128,7 +129,7 @@ impl<S: Scalar> Front<S> {
 
     /// The nearest event, taken from the queue.
     pub(crate) fn pop(&mut self) -> Option<Event> {
-        self.queue.pop()
+        self.queue.pop().map(|(key, what)| Event::new(key, what))
     }
 
     /// The next edge to close with the front at `key`: one asked for at `key` or before.
@@ -142,13 +143,13 @@ impl<S: Scalar> Front<S> {
 
     /// Puts a popped event back into the queue at a later key.
     pub(crate) fn requeue(&mut self, event: Event, key: f64) {
-        self.queue.push(Event::new(key, event.what));
+        self.queue.push(key, event.what);
     }
 
     /// Queues the wedge named `at` at the smallest distance it gives.
     pub(crate) fn push_wedge(&mut self, at: WedgeRef, wedge: &impl WedgeFields<S>) {
         let key = wedge.min_distance().to_f64();
-        self.queue.push(Event::new(key, EventKind::Wedge(at)));
+        self.queue.push(key, EventKind::Wedge(at));
         self.peak_queue = self.peak_queue.max(self.queue.len());
     }
 
@@ -221,7 +222,7 @@ impl<S: Scalar> Front<S> {
         });
         if acts_as_pseudo_source::<S>(mesh, v) {
             self.pending_emission[v.index()] = true;
-            self.queue.push(Event::new(approx, EventKind::Vertex(v)));
+            self.queue.push(approx, EventKind::Vertex(v));
         }
         if let (Some(distance), Some(path)) = (twin_distance, twin_path) {
             for &e in mesh.vertex_edges(v) {

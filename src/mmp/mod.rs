@@ -15,6 +15,7 @@ mod planar;
 mod propagate;
 mod provenance;
 mod query;
+mod radix_queue;
 mod region_runs;
 mod rounded_gap;
 mod shadow;

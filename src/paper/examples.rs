@@ -7,6 +7,7 @@ use crate::scalar::{BisectorRoots, Scalar};
 
 /// A wedge as an example names it: its name, its (pseudo-)source vertex, and the faces it
 /// passes through, each by its corners.
+#[derive(Clone, Copy, Debug)]
 pub struct NamedStrip {
     /// The paper's name (`w1`, `P`, ...).
     pub name: &'static str,
@@ -75,6 +76,23 @@ pub const EXAMPLE3: [NamedStrip; 2] = [
         name: "w2",
         source: 0,
         faces: &[[0, 3, 4], [3, 7, 4], [4, 7, 8], [5, 8, 7]],
+    },
+];
+
+/// Example 3: the mirror images of `w1` and `w2` under the symmetry x <-> y, which fixes `e0`
+/// pointwise: `w1'` over the side x = 0 and `w2'` over the side x = 1 reach `e0` from the other
+/// side with the same distance function (eq. (2) has infinitely many solutions), so each final
+/// wedge of `e0` is whichever of a tied pair reached it first.
+pub const EXAMPLE3_MIRRORS: [NamedStrip; 2] = [
+    NamedStrip {
+        name: "w1'",
+        source: 0,
+        faces: &[[0, 4, 1], [1, 4, 8], [1, 8, 5], [5, 8, 7]],
+    },
+    NamedStrip {
+        name: "w2'",
+        source: 0,
+        faces: &[[0, 2, 3], [2, 7, 3], [2, 6, 7], [5, 7, 6]],
     },
 ];
 
