@@ -71,6 +71,10 @@ mixed_magnitudes! {
     // was dropped as narrower than the edge's resolution, and the geodesics it fans out into
     // the faces beyond with it; f64 0.27 (1.3e-9) long at v55.
     seed_3925575493033055441_narrow_stretches_near_their_pseudo_source: 3925575493033055441, 37, 38;
+    // A vertex beside the ray through a range's end, its image 3e8 away (edges from 1e-5 to
+    // 3e8): the shadow rounded 492 beyond the end, wider than a gap of 1e-6 of the scale; f64
+    // and adaptive 2e4 (6.7e-5) long at v3 by another way (the corpus's seed 15).
+    seed_15798231625220791627_gaps_as_wide_as_the_span_rounds: 15798231625220791627, 2, 0;
 }
 
 /// The shortest path from `from` to `to` on the mixed-magnitude mesh of `seed`, traced in `S`:

@@ -10,7 +10,7 @@ use super::front::{acts_as_pseudo_source, EventKind, Front};
 use super::paths::{continued, CongruentPaths, Path};
 use super::planar::Planar;
 use super::provenance::{keeps_values, Anchor, Light, Provenance};
-use super::rounded_gap::{distance_through, end_beside};
+use super::rounded_gap::{distance_through, end_beside, gap_fraction};
 use super::shadow::Shadow;
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
@@ -1023,7 +1023,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         }
         if let Some((v, d)) = apex {
             self.offer_vertex(v, (d, apex_path), (w, true));
-        } else if let Some(end) = end_beside(w, || shadow.clone(), length) {
+        } else if let Some(end) = end_beside(w, || shadow.clone(), length, gap_fraction(mesh)) {
             // An apex in a gap that rounding left beside the range (see `rounded_gap.rs`).
             let d = distance_through(w, end, (layout.apex_x, layout.apex_h));
             if self.offer_vertex(layout.apex_vertex(), (d, apex_path), (w, false)) {

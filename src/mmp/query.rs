@@ -4,7 +4,7 @@
 
 use super::field::GeodesicField;
 use super::planar::Planar;
-use super::rounded_gap::{distance_through, end_beside};
+use super::rounded_gap::{distance_through, end_beside, gap_fraction};
 use super::source::{PointError, SurfacePoint};
 use super::wedge::Wedge;
 use crate::mesh::{EdgeId, FaceId, SourceId, VertexId};
@@ -185,7 +185,7 @@ impl<S: Scalar> GeodesicField<'_, S> {
                 // Outside the range: reached through its end only from a pseudo-source beyond
                 // the edge, in a gap that rounding left beside the range (see `rounded_gap.rs`).
                 if beside && !same_side && w.source_y.sign() != Sign::Zero {
-                    if let Some(end) = end_beside(w, || c, length) {
+                    if let Some(end) = end_beside(w, || c, length, gap_fraction(self.mesh())) {
                         let distance = distance_through(w, end, (&at.x, &at.y));
                         let at = Planar {
                             x: end.clone(),

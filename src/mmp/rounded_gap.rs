@@ -16,6 +16,7 @@
 
 use super::provenance::keeps_values;
 use super::wedge::Wedge;
+use crate::mesh::TriMesh;
 use crate::scalar::Scalar;
 use std::cmp::Ordering;
 
@@ -27,15 +28,31 @@ use std::cmp::Ordering;
 /// the work of offering it to vertices that no rounding could have put there.
 const ROUNDED_GAP: f64 = 1e-6;
 
+/// On a mesh whose edge lengths span a wide factor, an image unfolded across long edges is
+/// placed to about `f64::EPSILON` times that factor of the scale ([`ValidationReport`]'s
+/// `edge_length_span`), and so is a shadow constructed from it: the gap is taken to be this
+/// many times wider. On a corpus mesh with edges from 1e-5 to 3e8 (span 7e9), the shadow of a
+/// vertex beside a range's end fell 492 beyond it (1.6e-6 of its scale 3e8), outside
+/// [`ROUNDED_GAP`], and the vertex came out 2e4 long (6.7e-5 relative) by another way.
+///
+/// [`ValidationReport`]: crate::mesh::ValidationReport
+const SPAN_GAPS: f64 = 16.0;
+
+/// The widest gap, as a fraction of the meeting's scale, that rounding may leave on `mesh`.
+pub(crate) fn gap_fraction(mesh: &TriMesh) -> f64 {
+    ROUNDED_GAP.max(SPAN_GAPS * f64::EPSILON * mesh.validation().edge_length_span)
+}
+
 /// The end of the wedge's range (on an edge of the given length) beside which the `shadow` of
 /// a point, where the ray from the pseudo-source to it crosses the edge's line, lies outside
-/// the range in a gap that rounding may have left ([`ROUNDED_GAP`]); `None` for number types
-/// that keep values, which do not construct the shadow. The others' values are their `f64`s,
-/// so the gap is measured on them.
+/// the range in a gap that rounding may have left (`gap`, [`gap_fraction`] of the mesh);
+/// `None` for number types that keep values, which do not construct the shadow. The others'
+/// values are their `f64`s, so the gap is measured on them.
 pub(crate) fn end_beside<'a, S: Scalar>(
     w: &'a Wedge<S>,
     shadow: impl FnOnce() -> S,
     length: &S,
+    gap: f64,
 ) -> Option<&'a S> {
     if keeps_values::<S>() {
         return None;
@@ -56,7 +73,7 @@ pub(crate) fn end_beside<'a, S: Scalar>(
     ]
     .into_iter()
     .fold(0.0, f64::max);
-    ((shadow.to_f64() - end_f64).abs() <= ROUNDED_GAP * scale).then_some(end)
+    ((shadow.to_f64() - end_f64).abs() <= gap * scale).then_some(end)
 }
 
 /// The length of the path through the point `end` of the wedge's range to the point at
