@@ -319,6 +319,16 @@ impl TriMesh {
         self.topology.boundary_vertex[v.index()]
     }
 
+    /// Whether the vertex is a corner of a degenerate face or an end of an edge shorter than
+    /// `1e-8` of its face's longest edge: its angles mean little to a float backend (see
+    /// [`TriMesh::may_bend_geodesics`]).
+    ///
+    /// # Panics
+    /// If `v` is not a vertex of the mesh.
+    pub fn is_on_degenerate_face(&self, v: VertexId) -> bool {
+        self.topology.on_degenerate_face[v.index()]
+    }
+
     /// The face on side `side` of an edge (below [`TriMesh::side_count`]; sides 0 and 1 are
     /// [`Edge::faces`]), with its apex and its two other edges; `None` if that side has no face.
     ///
