@@ -162,9 +162,6 @@ fn fan(mesh: &TriMesh, v: VertexId) -> Option<(Vec<(VertexId, f64)>, Vec<(FaceId
     let mut at = 0.0;
     let (mut f, mut from) = (first, u0);
     for _ in 0..star.len() {
-        if mesh.is_degenerate_face(f) {
-            return None;
-        }
         let c = corner(from, u);
         if !(c > 0.0 && c < PI * (1.0 - STRAIGHT_CORNER)) {
             return None;
