@@ -58,16 +58,21 @@ impl Arrival {
 
 /// The sector of directions around a vertex into which it sends wedges.
 pub(crate) struct Shadow {
-    /// The faces around the vertex in turn, each with the angle (from the first face's first
-    /// edge) at which it starts and its corner angle.
-    faces: Vec<(FaceId, f64, f64)>,
-    /// The neighbours in turn, each at the angle of its edge.
-    neighbours: Vec<(VertexId, f64)>,
+    fan: Fan,
     /// The angle sum.
     total: f64,
     /// Where the sector starts, in `[0, total)`, and its width.
     start: f64,
     width: f64,
+}
+
+/// A closed fan of faces round a vertex ([`fan`]).
+struct Fan {
+    /// The neighbours in turn, each at the angle of its edge (the first at 0).
+    neighbours: Vec<(VertexId, f64)>,
+    /// The faces in turn (the `i`-th from neighbour `i` to `i + 1`), each with the angle at
+    /// which it starts and its corner angle.
+    faces: Vec<(FaceId, f64, f64)>,
 }
 
 impl Shadow {
@@ -81,7 +86,8 @@ impl Shadow {
         if mesh.is_boundary_vertex(v) || mesh.is_on_degenerate_face(v) || unfolding.has_twin(v) {
             return None;
         }
-        let (neighbours, faces) = fan(mesh, v)?;
+        let fan = fan(mesh, v)?;
+        let (neighbours, faces) = (&fan.neighbours, &fan.faces);
         let (u, f, angle) = arrival_direction(mesh, unfolding, v, arrival)?;
         let i = neighbours.iter().position(|n| n.0 == u)?;
         let before = (i + faces.len() - 1) % faces.len();
@@ -97,22 +103,17 @@ impl Shadow {
         if angle.is_nan() || angle > corner + MARGIN {
             return None;
         }
-        Self::around((neighbours, faces), incoming)
+        Self::around(fan, incoming)
     }
 
     /// The shadow in a fan ([`fan`]) of a way arriving from the direction at angle
     /// `incoming` (measured as the fan's angles are).
-    #[allow(clippy::type_complexity)]
-    fn around(
-        (neighbours, faces): (Vec<(VertexId, f64)>, Vec<(FaceId, f64, f64)>),
-        incoming: f64,
-    ) -> Option<Self> {
-        let total: f64 = faces.iter().map(|x| x.2).sum();
+    fn around(fan: Fan, incoming: f64) -> Option<Self> {
+        let total: f64 = fan.faces.iter().map(|x| x.2).sum();
         let width = total - 2.0 * PI + 2.0 * MARGIN;
         let start = (incoming + PI - MARGIN).rem_euclid(total);
         (width.is_finite() && start.is_finite()).then_some(Shadow {
-            faces,
-            neighbours,
+            fan,
             total,
             start,
             width,
@@ -126,7 +127,7 @@ impl Shadow {
 
     /// Whether face `f` of the vertex meets the sector.
     pub(crate) fn meets_face(&self, f: FaceId) -> bool {
-        self.faces.iter().any(|&(g, at, corner)| {
+        self.fan.faces.iter().any(|&(g, at, corner)| {
             let o = self.offset(at);
             g == f && (o <= self.width || o + corner >= self.total)
         })
@@ -134,7 +135,8 @@ impl Shadow {
 
     /// Whether the edge to neighbour `u` lies in the sector.
     pub(crate) fn meets_edge(&self, u: VertexId) -> bool {
-        self.neighbours
+        self.fan
+            .neighbours
             .iter()
             .any(|&(n, at)| n == u && self.offset(at) <= self.width)
     }
@@ -144,8 +146,7 @@ impl Shadow {
 /// (the first at 0), and the faces between them (the `i`-th from neighbour `i` to `i + 1`), with
 /// their starting angles and corner angles; `None` unless every edge of `v` has two faces, they
 /// close round `v` once, and no corner is degenerate or straight.
-#[allow(clippy::type_complexity)]
-fn fan(mesh: &TriMesh, v: VertexId) -> Option<(Vec<(VertexId, f64)>, Vec<(FaceId, f64, f64)>)> {
+fn fan(mesh: &TriMesh, v: VertexId) -> Option<Fan> {
     let star = mesh.vertex_faces(v);
     let others = |f: FaceId| {
         let c = mesh.face(f);
@@ -174,7 +175,7 @@ fn fan(mesh: &TriMesh, v: VertexId) -> Option<(Vec<(VertexId, f64)>, Vec<(FaceId
         }
         let next = mesh.edge_faces(e).find(|&g| g != f)?;
         if next == first {
-            return (u == u0 && faces.len() == star.len()).then_some((neighbours, faces));
+            return (u == u0 && faces.len() == star.len()).then_some(Fan { neighbours, faces });
         }
         neighbours.push((u, at));
         let [a, b] = others(next)?;
@@ -245,13 +246,14 @@ mod tests {
     fn a_saddle_s_shadow_faces_away_from_the_arrival() {
         let mesh = monkey_saddle();
         let v = VertexId(0);
-        let (neighbours, faces) = fan(&mesh, v).expect("a closed fan");
+        let fan = fan(&mesh, v).expect("a closed fan");
+        let (neighbours, faces) = (fan.neighbours.clone(), fan.faces.clone());
         assert_eq!(faces.len(), 6);
         let total: f64 = faces.iter().map(|x| x.2).sum();
         assert!(total > 2.0 * PI + 0.5, "a saddle: {total}");
         // Arriving along the edge to the first neighbour: the sector of about 1.1 radians
         // round the opposite direction, total / 2 from it either way.
-        let shadow = Shadow::around((neighbours.clone(), faces.clone()), 0.0).expect("shadow");
+        let shadow = Shadow::around(fan, 0.0).expect("shadow");
         let half = total / 2.0;
         for &(f, at, corner) in &faces {
             let (from, to) = (at, at + corner);
