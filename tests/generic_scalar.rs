@@ -91,6 +91,9 @@ impl Scalar for CloneOnly {
     fn has_extent(lo: &Self, hi: &Self, scale: &Self) -> bool {
         f64::has_extent(&lo.0, &hi.0, &scale.0)
     }
+    fn near_tie(a: &SourceDistance<Self>, b: &SourceDistance<Self>, t: &Self) -> bool {
+        f64::near_tie(&raw(a), &raw(b), &t.0)
+    }
     fn within(x: &Self, lo: &Self, hi: &Self, scale: impl FnOnce() -> Self) -> bool {
         f64::within(&x.0, &lo.0, &hi.0, || scale().0)
     }

@@ -75,6 +75,15 @@ mixed_magnitudes! {
     // 3e8): the shadow rounded 492 beyond the end, wider than a gap of 1e-6 of the scale; f64
     // and adaptive 2e4 (6.7e-5) long at v3 by another way (the corpus's seed 15).
     seed_15798231625220791627_gaps_as_wide_as_the_span_rounds: 15798231625220791627, 2, 0;
+    // Two images far along a 5e7 edge's line gave distances equal to 2e-15 over 1.9e7 of it;
+    // exact gave the stretch to the one whose geodesics run on straight to v35 across edges
+    // 4e8 long, rounding to the other (which sees other faces there): v35 33 % long in f64
+    // and adaptive (the corpus's seed 105). The tied stretch is propagated as well.
+    seed_1679650315521263814_near_ties_send_both_wedges_on: 1679650315521263814, 22, 36;
+    // The same from v14 (0.1 % long, above its edge path; the corpus's seed 194) and from v33
+    // (1.7e-4 long; seed 167).
+    seed_14590259320333713011_near_ties_send_both_wedges_on: 14590259320333713011, 8, 14;
+    seed_11373374296747284527_near_ties_send_both_wedges_on: 11373374296747284527, 30, 33;
 }
 
 /// The shortest path from `from` to `to` on the mixed-magnitude mesh of `seed`, traced in `S`:

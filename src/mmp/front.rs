@@ -3,7 +3,7 @@
 //! and the best known distance of every vertex.
 
 use super::paths::Path;
-use super::provenance::keeps_values;
+use super::provenance::{keeps_values, Provenance};
 use super::radix_queue::RadixQueue;
 use super::shadow::Arrival;
 use super::source::SurfacePoint;
@@ -25,12 +25,13 @@ pub(crate) struct VertexDistance<S: Scalar> {
     pub(crate) path: S::Kept<Path>,
 }
 
-/// What an event is about: a wedge of an edge list (as long as it is there), or a vertex whose
-/// distance may have improved.
+/// What an event is about: a wedge of an edge list (as long as it is there), a vertex whose
+/// distance may have improved, or a wedge tied on a stretch of its edge ([`Front::push_tied`]).
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum EventKind {
     Wedge(WedgeRef),
     Vertex(VertexId),
+    Tied(u32),
 }
 
 /// Something due when the front reaches a key, ordered reversed, so that `BinaryHeap` pops the
@@ -104,6 +105,8 @@ pub(crate) struct Front<S: Scalar> {
     /// The straight way by which each vertex got its distance, where it came from a wedge.
     arrivals: Vec<Option<Arrival>>,
     queue: RadixQueue<EventKind>,
+    /// The wedges of [`Front::push_tied`] until they are due.
+    tied: Vec<Option<(Wedge<S>, Provenance<S>)>>,
     /// Edges to close, apart from the events so that they do not change the order in which
     /// events of equal keys leave `queue` (ties that the vertices' last bits depend on).
     closing: BinaryHeap<Closing>,
@@ -121,6 +124,7 @@ impl<S: Scalar> Front<S> {
             pending_emission: vec![false; vertex_count],
             arrivals: vec![None; vertex_count],
             queue: RadixQueue::new(),
+            tied: Vec::new(),
             closing: BinaryHeap::new(),
             reached: 0,
             peak_queue: 0,
@@ -151,6 +155,23 @@ impl<S: Scalar> Front<S> {
         let key = wedge.min_distance().to_f64();
         self.queue.push(key, EventKind::Wedge(at));
         self.peak_queue = self.peak_queue.max(self.queue.len());
+    }
+
+    /// Queues a stretch of a wedge that lost it to the edge's wedge there on a near-tie
+    /// ([`Scalar::near_tie`]): the two images may see different faces beyond, and the rounding
+    /// that chose one may have chosen the wrong one (on a mixed-magnitude mesh, a vertex came
+    /// out 33 % long without the other's geodesics). Propagated as any wedge when due, but not
+    /// kept on its edge, whose distances it does not lower.
+    pub(crate) fn push_tied(&mut self, w: Wedge<S>, kept: Provenance<S>) {
+        let key = w.min_distance().to_f64();
+        self.queue
+            .push(key, EventKind::Tied(self.tied.len() as u32));
+        self.tied.push(Some((w, kept)));
+    }
+
+    /// The tied wedge of an event ([`Front::push_tied`]).
+    pub(crate) fn take_tied(&mut self, i: u32) -> Option<(Wedge<S>, Provenance<S>)> {
+        self.tied[i as usize].take()
     }
 
     /// Asks, once the front reaches `key`, whether the wedges of edge `e` are still needed.

@@ -43,6 +43,12 @@ pub struct Stats {
     /// the vertex lying in a gap that rounding left beside the range (`mmp/rounded_gap.rs`;
     /// number types that keep values leave none). A later wedge may still lower it further.
     pub rounded_gap_offers: u64,
+    /// Stretches of wedges propagated although the edge's wedge there kept them, the two
+    /// distances being equal to within the backend's rounding ([`Scalar::near_tie`]; number
+    /// types that construct exactly have none).
+    ///
+    /// [`Scalar::near_tie`]: crate::scalar::Scalar::near_tie
+    pub tied_wedges_propagated: u64,
     /// Wedges joined to the wedge before them on their edge, which they continue: the same
     /// image of the same pseudo-source, with ranges that meet (in an exactly flat region, on
     /// the shadow line of a vertex).

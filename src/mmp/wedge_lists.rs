@@ -167,6 +167,17 @@ pub(crate) trait Arrivals<S: Scalar> {
     /// A wedge, with what it keeps of its construction, reaches the vertex `v` of its
     /// edge at distance `d`.
     fn reach(&mut self, v: VertexId, d: S, wedge: (&Wedge<S>, &Provenance<S>));
+    /// The stretch `[lo, hi]` of `wedge`'s range that the edge's wedge of distance function
+    /// `other` kept: if the two are equal there to within the backend's rounding, the stretch
+    /// of `wedge` is propagated as well (see `front.rs`).
+    fn tied(
+        &mut self,
+        _wedge: (&Wedge<S>, &Provenance<S>),
+        _stretch: [&S; 2],
+        _other: &SourceDistance<S>,
+    ) {
+    }
+
     /// The mesh and the run's table of congruent paths, where the wedges' paths are read
     /// against them.
     fn congruence(&self) -> Option<(&TriMesh, &CongruentPaths<S>)> {
@@ -371,6 +382,21 @@ impl<S: Scalar> WedgeLists<S> {
         let new = (&w, &kept);
         let edge = (length, arrivals.congruence());
         cut_into_pieces(&mut stats.eq2, log, &mut pieces, overlapping, new, edge);
+        // Stretches of the new range that an overlapped wedge kept, which a near-tie may have
+        // decided (only number types that round their constructions have those).
+        if !keeps_values::<S>() {
+            for piece in &pieces {
+                let Some(k) = piece.owner.old_id() else {
+                    continue;
+                };
+                if piece.lo.compare(&w.b0) != Ordering::Less
+                    && piece.hi.compare(&w.b1) != Ordering::Greater
+                {
+                    let other = list[first + k as usize].distance_function();
+                    arrivals.tied((&w, &kept), [&piece.lo, &piece.hi], &other);
+                }
+            }
+        }
         if pieces.iter().any(|p| p.owner == Owner::NEW) {
             let edge = (length, ends);
             let run = (stats, arrivals, strips);

@@ -487,6 +487,12 @@ impl Scalar for Adaptive {
     }
 
     #[inline]
+    fn near_tie(a: &SourceDistance<Self>, b: &SourceDistance<Self>, t: &Self) -> bool {
+        let (da, db) = (a.at(t).0, b.at(t).0);
+        (da - db).abs() <= Resolution::DISTANCE * da.abs().max(db.abs())
+    }
+
+    #[inline]
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign {
         let c = |p: [&Self; 2]| robust::Coord {
             x: p[0].0,

@@ -72,6 +72,12 @@ impl Field for f64 {
 impl Scalar for f64 {
     super::keeps_no_values!();
 
+    #[inline]
+    fn near_tie(a: &SourceDistance<f64>, b: &SourceDistance<f64>, t: &f64) -> bool {
+        let (da, db) = (a.at(t), b.at(t));
+        (da - db).abs() <= FloatTolerance::DISTANCE * da.abs().max(db.abs())
+    }
+
     #[inline(always)]
     fn orientation(p: [&f64; 2], q: [&f64; 2], r: [&f64; 2]) -> Sign {
         ((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])).sign()

@@ -309,6 +309,15 @@ pub trait Scalar: Field {
         Self::bisector(a, b, lo, hi, known)
     }
 
+    /// Whether two distance functions are equal at `t` to within the rounding of the
+    /// constructions that gave them (their images unfolded across faces): which wedge the
+    /// engine gives the point to is then a guess, so the other one is sent on as well.
+    /// `false` for number types that construct exactly, whose ties are ties.
+    #[inline(always)]
+    fn near_tie(_a: &SourceDistance<Self>, _b: &SourceDistance<Self>, _t: &Self) -> bool {
+        false
+    }
+
     /// The orientation of the triangle `(p, q, r)`: the sign of `(q - p) x (r - p)`, positive
     /// when `r` lies to the left of the line from `p` to `q`.
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign;

@@ -66,6 +66,7 @@ fn report<S: Scalar>(
         "wedges_filtered": stats.wedges_filtered,
         "wedges_joined": stats.wedges_joined,
         "rounded_gap_offers": stats.rounded_gap_offers,
+        "tied_wedges_propagated": stats.tied_wedges_propagated,
         "wedges_offered_again": stats.wedges_offered_again,
         "pseudo_source_emissions": stats.pseudo_source_emissions,
         "propagation_seconds": stats.propagation_seconds,
