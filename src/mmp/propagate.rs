@@ -279,9 +279,10 @@ impl<S: Scalar> Arrivals<S> for Reach<'_, S> {
     }
 
     /// Only stretches wider than the gaps rounding leaves ([`gap_fraction`]): beside a
-    /// crossing, two distances are within rounding of each other on a narrow stretch (212k
-    /// stretches wider than the edge's resolution from v0 of stanford_bunny, 3 wider than the
-    /// gap), through which the other image sees nothing that its neighbours do not.
+    /// crossing, two distances are within rounding of each other on a narrow stretch, through
+    /// which the other image sees nothing that its neighbours do not (from v0 of
+    /// stanford_bunny, f64 decided 212k stretches wider than the edge's resolution as ties;
+    /// 3 stretches pass this test).
     fn tied(
         &mut self,
         (w, kept): (&Wedge<S>, &Provenance<S>),

@@ -488,8 +488,7 @@ impl Scalar for Adaptive {
 
     #[inline]
     fn near_tie(a: &SourceDistance<Self>, b: &SourceDistance<Self>, t: &Self) -> bool {
-        let (da, db) = (a.at(t).0, b.at(t).0);
-        (da - db).abs() <= Resolution::DISTANCE * da.abs().max(db.abs())
+        float::compare_with_tie(a.at(t).0, b.at(t).0, Resolution::DISTANCE) == Ordering::Equal
     }
 
     #[inline]

@@ -74,8 +74,7 @@ impl Scalar for f64 {
 
     #[inline]
     fn near_tie(a: &SourceDistance<f64>, b: &SourceDistance<f64>, t: &f64) -> bool {
-        let (da, db) = (a.at(t), b.at(t));
-        (da - db).abs() <= FloatTolerance::DISTANCE * da.abs().max(db.abs())
+        a.at(t).compare_distance(&b.at(t)) == Ordering::Equal
     }
 
     #[inline(always)]
