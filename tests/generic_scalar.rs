@@ -65,9 +65,9 @@ impl Field for CloneOnly {
 
 impl Scalar for CloneOnly {
     // Keeps no values, as f64: the same constructions, so the same answers to the bit.
-    type Kept<T: Clone + std::fmt::Debug> = ();
-    fn keep<T: Clone + std::fmt::Debug>(_make: impl FnOnce() -> T) -> Self::Kept<T> {}
-    fn kept<T: Clone + std::fmt::Debug>(_kept: &Self::Kept<T>) -> Option<T> {
+    type Kept<T: Clone + std::fmt::Debug + Send + Sync> = ();
+    fn keep<T: Clone + std::fmt::Debug + Send + Sync>(_make: impl FnOnce() -> T) -> Self::Kept<T> {}
+    fn kept<T: Clone + std::fmt::Debug + Send + Sync>(_kept: &Self::Kept<T>) -> Option<T> {
         None
     }
     fn orientation(p: [&Self; 2], q: [&Self; 2], r: [&Self; 2]) -> Sign {

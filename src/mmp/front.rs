@@ -2,6 +2,7 @@
 //! ordered by the smallest distance each gives, and vertices waiting to act as pseudo-sources)
 //! and the best known distance of every vertex.
 
+use super::bounds::SharedBounds;
 use super::paths::Path;
 use super::provenance::{keeps_values, Provenance};
 use super::radix_queue::RadixQueue;
@@ -14,6 +15,7 @@ use crate::mesh::{EdgeId, SourceId, TriMesh, VertexId};
 use crate::scalar::Scalar;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
+use std::sync::Arc;
 
 /// The best known distance of a vertex: an upper bound during propagation, final after it.
 #[derive(Clone, Debug)]
@@ -114,11 +116,15 @@ pub(crate) struct Front<S: Scalar> {
     reached: usize,
     /// The longest the queue has been right after a wedge joined it.
     peak_queue: usize,
+    /// Where every distance given to a vertex is published, when another engine propagates
+    /// beside this one (see `sectors.rs`).
+    published: Option<Arc<SharedBounds>>,
 }
 
 impl<S: Scalar> Front<S> {
-    /// An empty queue and no vertex reached, on a mesh of `vertex_count` vertices.
-    pub(crate) fn new(vertex_count: usize) -> Self {
+    /// An empty queue and no vertex reached, on a mesh of `vertex_count` vertices; the
+    /// vertices' distances are published to `published`, if given.
+    pub(crate) fn new(vertex_count: usize, published: Option<Arc<SharedBounds>>) -> Self {
         Front {
             vertices: vec![None; vertex_count],
             pending_emission: vec![false; vertex_count],
@@ -128,6 +134,7 @@ impl<S: Scalar> Front<S> {
             closing: BinaryHeap::new(),
             reached: 0,
             peak_queue: 0,
+            published,
         }
     }
 
@@ -233,6 +240,9 @@ impl<S: Scalar> Front<S> {
         }
         self.arrivals[v.index()] = None;
         let approx = distance.to_f64();
+        if let Some(published) = &self.published {
+            published.lower(v, approx);
+        }
         let twin_distance = unfolding.has_twin(v).then(|| distance.clone());
         let twin_path = twin_distance.as_ref().map(|_| path.clone());
         *slot = Some(VertexDistance {
@@ -276,6 +286,31 @@ impl<S: Scalar> Front<S> {
             self.arrivals[v.index()] = Some(Arrival::of(w));
         }
         improved
+    }
+
+    /// Takes, at each vertex, the other front's distance where it is shorter (the distances of
+    /// two engines that propagated different sectors of a source's directions).
+    pub(crate) fn take_shorter(&mut self, other: Front<S>) {
+        for (mine, theirs) in self.vertices.iter_mut().zip(other.vertices) {
+            let Some(theirs) = theirs else { continue };
+            match mine {
+                Some(m) if m.distance.compare_distance(&theirs.distance) != Ordering::Greater => {}
+                Some(_) => *mine = Some(theirs),
+                None => {
+                    self.reached += 1;
+                    *mine = Some(theirs);
+                }
+            }
+        }
+    }
+
+    /// Names source `to` as the nearest of every vertex nearest to `from` (the same point).
+    pub(crate) fn rename_source(&mut self, from: SourceId, to: SourceId) {
+        for d in self.vertices.iter_mut().flatten() {
+            if d.source == from {
+                d.source = to;
+            }
+        }
     }
 
     /// The vertices' distances at the end of a run, those beyond `max` (the run's maximum

@@ -3,9 +3,11 @@
 //! they are intersected by solving eq. (2) (Section 4); the final wedges on the edges induce the
 //! subdivision from which distances are read and paths traced back (Section 2).
 
+mod bounds;
 mod coverage;
 mod crease;
 mod edge_wedges;
+mod fan;
 mod field;
 mod flat_region;
 mod front;
@@ -18,6 +20,7 @@ mod query;
 mod radix_queue;
 mod region_runs;
 mod rounded_gap;
+mod sectors;
 mod shadow;
 mod source;
 mod stats;

@@ -4,6 +4,7 @@
 //! are the [`front`](super::front); the wedges on the edges, intersected as they arrive, are the
 //! [`wedge_lists`](super::wedge_lists).
 
+use super::bounds::SharedBounds;
 use super::field::GeodesicField;
 use super::flat_region::RegionImage;
 use super::front::{acts_as_pseudo_source, EventKind, Front};
@@ -11,6 +12,7 @@ use super::paths::{continued, CongruentPaths, Path};
 use super::planar::Planar;
 use super::provenance::{keeps_values, Anchor, Light, Provenance};
 use super::rounded_gap::{distance_through, end_beside, gap_fraction};
+use super::sectors::{split, Sector, Share, MARGIN_SOURCE};
 use super::shadow::Shadow;
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
@@ -56,6 +58,13 @@ pub struct PropagateOptions {
     /// as decided by the backend; the front is the queue's key, the `f64` value of a distance.
     /// A stop point that cannot be reached lets the run go on to its end. Empty: no early stop.
     pub stop_points: Vec<SurfacePoint>,
+    /// Threads a run may use (0 and 1: the calling thread only). Two or more split the
+    /// directions of a single source vertex into two sectors propagated at once, on two
+    /// threads, where only vertex distances are wanted
+    /// ([`propagate_vertices`](crate::propagate_vertices)) and there are no stop points; the
+    /// distances are the shorter of the two sectors', equal to a one-thread run's up to the
+    /// last bits where two geodesics from different sectors tie (see `sectors.rs`).
+    pub threads: usize,
     /// Only vertex distances are wanted ([`propagate_vertices`](crate::propagate_vertices)):
     /// the wedges of an edge are given up as soon as no later wedge can win a point of it.
     pub(crate) vertices_only: bool,
@@ -86,6 +95,12 @@ impl PropagateOptions {
     /// [`precision_cap`](Self::precision_cap)).
     pub fn with_precision_cap(mut self, bits: u32) -> Self {
         self.precision_cap = Some(bits);
+        self
+    }
+
+    /// Lets the run use up to `threads` threads (see [`threads`](Self::threads)).
+    pub fn with_threads(mut self, threads: usize) -> Self {
+        self.threads = threads;
         self
     }
 }
@@ -213,18 +228,43 @@ pub fn propagate_with_progress<'m, S: Scalar>(
         .map(|p| p.validated(mesh))
         .collect::<Result<Vec<_>, _>>()?;
     let started = Instant::now();
-    S::begin_run(options.precision_cap);
-    S::take_counts();
-    let mut engine = Engine::new(mesh, options, sources, &stop_points);
-    for k in 0..engine.sources.len() {
-        let point = engine.sources[k];
-        engine.emit_source(SourceId(k as u32), &point);
-    }
-    engine.run(&mut progress);
-    engine.stats.propagation_seconds = started.elapsed().as_secs_f64();
-    engine.stats.backend = S::take_counts();
-    S::locate(Site::ANYWHERE);
-    Ok(engine.finish())
+    // Not where the run proves ties by congruent paths (`paths.rs`, `strips.rs`): those
+    // proofs take every wedge of a source to be in the one run.
+    let sectors = match sources[..] {
+        [SurfacePoint::Vertex(v)]
+            if options.threads > 1
+                && options.vertices_only
+                && stop_points.is_empty()
+                && !keeps_values::<S>() =>
+        {
+            split(mesh, v)
+        }
+        _ => None,
+    };
+    let Some([first, second]) = sectors else {
+        let mut engine = Engine::new(mesh, options, sources, &stop_points, None);
+        engine.propagate(&mut progress);
+        return Ok(engine.finish(started));
+    };
+    let extent = mesh
+        .positions()
+        .iter()
+        .map(|p| p.abs().max_element())
+        .fold(0.0, f64::max);
+    let bounds = Arc::new(SharedBounds::new(
+        mesh.vertex_count(),
+        extent * mesh.unit_scale(),
+    ));
+    // The source twice: the second is the sector's margins' (`sectors.rs`).
+    let twice = vec![sources[0]; 2];
+    let mut engine = Engine::new(mesh, options, twice.clone(), &[], Some((first, &bounds)));
+    let mut other = Engine::new(mesh, options, twice, &[], Some((second, &bounds)));
+    std::thread::scope(|scope| {
+        let worker = scope.spawn(|| other.propagate(&mut |_: &Progress| {}));
+        engine.propagate(&mut progress);
+        worker.join().expect("the other sector's propagation");
+    });
+    Ok(engine.merged(other).finish(started))
 }
 
 /// What a wedge of a (pseudo-)source keeps, if given: its distances at its edge's vertices, its
@@ -248,12 +288,17 @@ struct Engine<'m, S: Scalar> {
     wedges: WedgeLists<S>,
     front: Front<S>,
     max_distance: f64,
+    /// The exact backend's precision cap asked for ([`PropagateOptions::precision_cap`]).
+    precision_cap: Option<u32>,
     stop: Option<StopPoints<S>>,
     /// One expression per vertex distance of congruent paths, where the run proves ties by
     /// congruence (see `paths.rs`).
     paths: Option<CongruentPaths<S>>,
     /// The wedges offered through each strip, where the run keeps paths (see `strips.rs`).
     offered: Option<OfferedWedges>,
+    /// The sector of the source's directions this engine propagates, and the distances the
+    /// other sector's engine has found, where two propagate at once (see `sectors.rs`).
+    sector: Option<(Sector, Arc<SharedBounds>)>,
     stats: Stats,
 }
 
@@ -313,6 +358,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
         options: &PropagateOptions,
         sources: Vec<SurfacePoint>,
         stop_points: &[SurfacePoint],
+        sector: Option<(Sector, &Arc<SharedBounds>)>,
     ) -> Self {
         let unfolding = Unfolding::new(mesh, &sources);
         let stop = StopPoints::new(mesh, &unfolding, stop_points);
@@ -339,11 +385,58 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 options.record_decisions,
                 options.vertices_only,
             ),
-            front: Front::new(mesh.vertex_count()),
+            front: Front::new(
+                mesh.vertex_count(),
+                sector.as_ref().map(|s| Arc::clone(s.1)),
+            ),
             max_distance,
+            precision_cap: options.precision_cap,
             stop,
+            sector: sector.map(|(sector, bounds)| (sector, Arc::clone(bounds))),
             stats: Stats::default(),
         }
+    }
+
+    /// Emits the sources' wedges and propagates them to the end, on the calling thread, whose
+    /// backend state (precision cap, decision counts) it sets.
+    fn propagate(&mut self, progress: &mut impl FnMut(&Progress)) {
+        S::begin_run(self.precision_cap);
+        S::take_counts();
+        // A sector's engine emits its one source once, the margins' with it.
+        let emitted = if self.sector.is_some() {
+            1
+        } else {
+            self.sources.len()
+        };
+        for k in 0..emitted {
+            let point = self.sources[k];
+            self.emit_source(SourceId(k as u32), &point);
+        }
+        self.run(progress);
+        self.stats.sectors = 1;
+        self.stats.backend = S::take_counts();
+        S::locate(Site::ANYWHERE);
+    }
+
+    /// Whether a length known of a path to `v` (the other sector's, see `bounds.rs`) beats
+    /// `d` at `v` itself, or at the point `along` from `v` on one of its edges.
+    fn beaten_at(&self, v: VertexId, along: &S, d: &S) -> bool {
+        let Some(bound) = self.sector.as_ref().and_then(|(_, b)| b.beyond(v)) else {
+            return false;
+        };
+        (S::from_f64(bound) + along).compare_distance(d) == Ordering::Less
+    }
+
+    /// Whether the other sector's paths to the ends of the wedge's edge beat it throughout
+    /// (the rule of [`Self::is_dominated_by_vertices`]).
+    fn beaten_by_other_sector(&self, w: &Wedge<S>) -> bool {
+        if self.sector.is_none() {
+            return false;
+        }
+        let [v0, v1] = self.unfolding.ends(self.mesh, w.edge);
+        let d = w.distance_function();
+        let from_v1 = self.unfolding.length(w.edge).clone() - &w.b0;
+        self.beaten_at(v0, &w.b1, &d.at(&w.b1)) || self.beaten_at(v1, &from_v1, &d.at(&w.b0))
     }
 
     fn run(&mut self, progress: &mut impl FnMut(&Progress)) {
@@ -378,6 +471,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 ) {
                     Due::Stale => {}
                     Due::Later(key) => self.front.requeue(event, key),
+                    Due::Now(wedge, _) if self.beaten_by_other_sector(&wedge) => {
+                        self.stats.pruned_by_other_sector += 1;
+                    }
                     Due::Now(wedge, kept) => {
                         self.stats.wedges_propagated += 1;
                         self.propagate_wedge(&wedge, &kept);
@@ -394,6 +490,12 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 }
                 EventKind::Vertex(v) => {
                     if let Some((sigma, source, path)) = self.front.take_emission(v) {
+                        // The other sector's engine propagates the margin's paths on.
+                        let margin = self.sector.is_some() && source == MARGIN_SOURCE;
+                        if margin || self.beaten_at(v, &S::zero(), &sigma) {
+                            self.stats.pruned_by_other_sector += 1;
+                            continue;
+                        }
                         self.stats.pseudo_source_emissions += 1;
                         let shadow = self
                             .front
@@ -421,8 +523,20 @@ impl<'m, S: Scalar> Engine<'m, S> {
         })
     }
 
-    fn finish(mut self) -> GeodesicField<'m, S> {
-        self.stats.peak_queue = self.front.peak_queue();
+    /// This sector's engine with the other's results: at each vertex the shorter distance
+    /// (this one's on a tie), and both engines' counts.
+    fn merged(mut self, other: Self) -> Self {
+        self.stats.absorb(other.stats);
+        self.stats.peak_queue += other.front.peak_queue();
+        self.front.take_shorter(other.front);
+        self.front.rename_source(MARGIN_SOURCE, SourceId(0));
+        self.sources.truncate(1);
+        self
+    }
+
+    fn finish(mut self, started: Instant) -> GeodesicField<'m, S> {
+        self.stats.propagation_seconds = started.elapsed().as_secs_f64();
+        self.stats.peak_queue += self.front.peak_queue();
         let vertices = self.front.into_vertices(self.max_distance);
         GeodesicField::new(
             self.mesh,
@@ -641,6 +755,16 @@ impl<'m, S: Scalar> Engine<'m, S> {
         // Only into the vertex's shadow, where it has one (`shadow.rs`).
         let into_face = |f: FaceId| shadow.as_ref().is_none_or(|s| s.meets_face(f));
         let along_edge = |u: VertexId| shadow.as_ref().is_none_or(|s| s.meets_edge(u));
+        // A source whose directions two engines split sends wedges only into its engine's
+        // sector, those of the sector's margins as the margins' source (see `sectors.rs`).
+        let sector = match source {
+            PseudoSource::Source(_) => self.sector.as_ref().map(|s| s.0.clone()),
+            PseudoSource::Vertex(_) => None,
+        };
+        let of_share = |share: Share| match share {
+            Share::Own => k,
+            Share::Margin => MARGIN_SOURCE,
+        };
         for &f in mesh
             .vertex_faces(v)
             .iter()
@@ -668,10 +792,38 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let across = continued::<S>(&path, |p| p.across(f));
             let strip = self.start_strip((v, &path), g, Some(f));
             let kept = (Some(ends), image, across, strip);
-            self.add_wedge(g, at, side, sigma.clone(), (source, k), kept);
+            let Some(sector) = &sector else {
+                self.add_wedge(g, at, side, sigma.clone(), (source, k), kept);
+                continue;
+            };
+            let first = self.unfolding.ends(mesh, g)[0];
+            for ([lo, hi], share) in sector.pieces_of(f, first) {
+                let k = of_share(share);
+                let source = PseudoSource::Source(k);
+                let kept = kept.clone();
+                let (mut w, kept) =
+                    self.wedge_on(g, at.clone(), side, sigma.clone(), (source, k), kept);
+                let length = self.unfolding.length(g);
+                (w.b0, w.b1) = (S::from_f64(lo) * length, S::from_f64(hi) * length);
+                self.insert(w, kept);
+            }
         }
         for &g in mesh.vertex_edges(v) {
-            if !mesh.edge(g).other(v).is_none_or(along_edge) {
+            let Some(other) = mesh.edge(g).other(v) else {
+                continue;
+            };
+            let k = match &sector {
+                Some(sector) => match sector.edge_to(other) {
+                    Some(share) => of_share(share),
+                    None => continue,
+                },
+                None => k,
+            };
+            let source = match source {
+                PseudoSource::Source(_) => PseudoSource::Source(k),
+                vertex => vertex,
+            };
+            if !along_edge(other) {
                 continue;
             }
             let x = if self.unfolding.ends(mesh, g)[0] == v {
@@ -699,17 +851,31 @@ impl<'m, S: Scalar> Engine<'m, S> {
         }
     }
 
-    /// Adds a wedge covering the whole edge `g`, of pseudo-source `source` leading back to
-    /// source `k`, with its distances at the edge's vertices if given (else its own).
+    /// Adds a wedge covering the whole edge `g` ([`Self::wedge_on`]).
     fn add_wedge(
         &mut self,
         g: EdgeId,
         at: Planar<S>,
         tau: Side,
         sigma: S,
+        source: (PseudoSource, SourceId),
+        kept: SourceKept<S>,
+    ) {
+        let (wedge, kept) = self.wedge_on(g, at, tau, sigma, source, kept);
+        self.insert(wedge, kept);
+    }
+
+    /// A wedge covering the whole edge `g`, of pseudo-source `source` leading back to source
+    /// `k`, with its distances at the edge's vertices if given (else its own).
+    fn wedge_on(
+        &self,
+        g: EdgeId,
+        at: Planar<S>,
+        tau: Side,
+        sigma: S,
         (source, k): (PseudoSource, SourceId),
         (at_ends, image, path, strip): SourceKept<S>,
-    ) {
+    ) -> (Wedge<S>, Provenance<S>) {
         let at = self.image_on(g, at, strip);
         let wedge = Wedge {
             edge: g,
@@ -730,7 +896,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             .with_image(image)
             .with_path(path)
             .with_strip(strip);
-        self.insert(wedge, kept);
+        (wedge, kept)
     }
 
     /// Propagates a wedge across the face on the far side of its edge [SSK+05 §4.1, LZT Fig. 2c]:
@@ -1084,6 +1250,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
             };
             if self.is_dominated_by_vertices(&child) {
                 self.stats.wedges_filtered += 1;
+            } else if self.beaten_by_other_sector(&child) {
+                self.stats.pruned_by_other_sector += 1;
             } else {
                 self.insert(child, kept);
             }

@@ -17,6 +17,7 @@
 //! vertex 1.3e-13 from another, a sliver corpus mesh came out 7 % long), and vertices whose
 //! arrival is not a straight way from a wedge, send wedges everywhere, as before.
 
+use super::fan::{fan, Fan};
 use super::unfold::Unfolding;
 use super::wedge::Wedge;
 use crate::mesh::vector::angle;
@@ -28,10 +29,6 @@ use std::f64::consts::PI;
 /// Radians added to the sector on both sides: far above the rounding of corner angles summed
 /// around a vertex (about 1e-15 each) and of an arrival's direction from unfolded positions.
 const MARGIN: f64 = 1e-6;
-
-/// Corners at a vertex this close to pi (relative) make it send wedges everywhere: a corner on
-/// its opposite edge sends wedges through that edge into the faces beyond.
-const STRAIGHT_CORNER: f64 = 1e-6;
 
 /// The straight way by which a wedge reached a vertex: the wedge's edge, side and pseudo-source
 /// image in the edge's frame, in `f64` (directions only).
@@ -64,15 +61,6 @@ pub(crate) struct Shadow {
     /// Where the sector starts, in `[0, total)`, and its width.
     start: f64,
     width: f64,
-}
-
-/// A closed fan of faces round a vertex ([`fan`]).
-struct Fan {
-    /// The neighbours in turn, each at the angle of its edge (the first at 0).
-    neighbours: Vec<(VertexId, f64)>,
-    /// The faces in turn (the `i`-th from neighbour `i` to `i + 1`), each with the angle at
-    /// which it starts and its corner angle.
-    faces: Vec<(FaceId, f64, f64)>,
 }
 
 impl Shadow {
@@ -140,56 +128,6 @@ impl Shadow {
             .iter()
             .any(|&(n, at)| n == u && self.offset(at) <= self.width)
     }
-}
-
-/// The neighbours of `v` in turn round a closed fan of its faces, each at the angle of its edge
-/// (the first at 0), and the faces between them (the `i`-th from neighbour `i` to `i + 1`), with
-/// their starting angles and corner angles; `None` unless every edge of `v` has two faces, they
-/// close round `v` once, and no corner is degenerate or straight.
-fn fan(mesh: &TriMesh, v: VertexId) -> Option<Fan> {
-    let star = mesh.vertex_faces(v);
-    let others = |f: FaceId| {
-        let c = mesh.face(f);
-        let k = c.iter().position(|&x| x == v)?;
-        Some([c[(k + 1) % 3], c[(k + 2) % 3]])
-    };
-    let first = *star.first()?;
-    let [u0, mut u] = others(first)?;
-    let p = mesh.position(v);
-    // On unit vectors: positions anywhere from 1e-300 to 1e300.
-    let corner = |a: VertexId, b: VertexId| angle(mesh.position(a) - p, mesh.position(b) - p);
-    let mut neighbours = vec![(u0, 0.0)];
-    let mut faces = Vec::with_capacity(star.len());
-    let mut at = 0.0;
-    let (mut f, mut from) = (first, u0);
-    for _ in 0..star.len() {
-        let c = corner(from, u);
-        if !(c > 0.0 && c < PI * (1.0 - STRAIGHT_CORNER)) {
-            return None;
-        }
-        faces.push((f, at, c));
-        at += c;
-        let e = mesh.edge_between(v, u)?;
-        if mesh.side_count(e) != 2 {
-            return None;
-        }
-        let next = mesh.edge_faces(e).find(|&g| g != f)?;
-        if next == first {
-            return (u == u0 && faces.len() == star.len()).then_some(Fan { neighbours, faces });
-        }
-        neighbours.push((u, at));
-        let [a, b] = others(next)?;
-        from = u;
-        u = if a == u {
-            b
-        } else if b == u {
-            a
-        } else {
-            return None;
-        };
-        f = next;
-    }
-    None
 }
 
 /// The arrival at `v` as a neighbour `u`, a face `f` of the edge `(v, u)` and the angle from

@@ -58,6 +58,13 @@ pub struct Stats {
     pub wedges_offered_again: u64,
     /// Times a vertex emitted wedges as a pseudo-source.
     pub pseudo_source_emissions: u64,
+    /// Wedges and pseudo-sources given up because the other sector's engine had found a
+    /// shorter path throughout, where two engines propagate a source's directions at once
+    /// ([`PropagateOptions::threads`](super::PropagateOptions::threads)).
+    pub pruned_by_other_sector: u64,
+    /// Engines that propagated at once: 2 where a source vertex's directions were split into
+    /// sectors ([`PropagateOptions::threads`](super::PropagateOptions::threads)), else 1.
+    pub sectors: u32,
     /// Cases of eq. (2) met in wedge intersections.
     pub eq2: Eq2Counts,
     /// Largest number of events waiting in the priority queue.
@@ -76,6 +83,32 @@ pub struct Stats {
     ///
     /// [`PropagateOptions::record_decisions`]: super::PropagateOptions::record_decisions
     pub decisions: Vec<Eq2Decision>,
+}
+
+impl Stats {
+    /// Adds the counts of a run that went on beside this one (the other sector's, see
+    /// [`PropagateOptions::threads`](super::PropagateOptions::threads)); the larger peaks add
+    /// up, both having been held at once.
+    pub(crate) fn absorb(&mut self, other: Stats) {
+        self.wedges_created += other.wedges_created;
+        self.wedges_propagated += other.wedges_propagated;
+        self.wedges_filtered += other.wedges_filtered;
+        self.rounded_gap_offers += other.rounded_gap_offers;
+        self.tied_wedges_propagated += other.tied_wedges_propagated;
+        self.wedges_joined += other.wedges_joined;
+        self.wedges_offered_again += other.wedges_offered_again;
+        self.pseudo_source_emissions += other.pseudo_source_emissions;
+        self.pruned_by_other_sector += other.pruned_by_other_sector;
+        self.sectors += other.sectors;
+        self.eq2.none += other.eq2.none;
+        self.eq2.one += other.eq2.one;
+        self.eq2.two += other.eq2.two;
+        self.eq2.infinite += other.eq2.infinite;
+        self.peak_queue += other.peak_queue;
+        self.peak_wedge_bytes += other.peak_wedge_bytes;
+        self.backend.absorb(other.backend);
+        self.decisions.extend(other.decisions);
+    }
 }
 
 /// One meeting of two wedges on a shared range of an edge [LZT §4], as the backend decided it.

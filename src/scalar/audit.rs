@@ -108,6 +108,25 @@ pub enum ZeroProof {
     SeparationBound,
 }
 
+impl DecisionCounts {
+    /// Adds the counts of another run (one that went on beside this one on another thread);
+    /// its sites join this one's as far as there is room.
+    pub(crate) fn absorb(&mut self, other: DecisionCounts) {
+        self.decisions += other.decisions;
+        self.by_filter += other.by_filter;
+        self.by_refinement += other.by_refinement;
+        self.certified_zeros += other.certified_zeros;
+        self.zeros_by_structure += other.zeros_by_structure;
+        self.zeros_by_rational_value += other.zeros_by_rational_value;
+        self.zeros_by_normal_form += other.zeros_by_normal_form;
+        self.zeros_by_separation_bound += other.zeros_by_separation_bound;
+        self.uncertified += other.uncertified;
+        let room = KEPT_SITES.saturating_sub(self.uncertified_sites.len());
+        self.uncertified_sites
+            .extend(other.uncertified_sites.into_iter().take(room));
+    }
+}
+
 impl Certificate {
     /// Whether the sign is proved.
     pub fn is_certified(self) -> bool {

@@ -32,13 +32,16 @@ macro_rules! ops_by_reference_for_copy {
 /// compared by value, and the engine's kept-value paths compile away.
 macro_rules! keeps_no_values {
     () => {
-        type Kept<T: Clone + std::fmt::Debug> = ();
+        type Kept<T: Clone + std::fmt::Debug + Send + Sync> = ();
 
         #[inline(always)]
-        fn keep<T: Clone + std::fmt::Debug>(_make: impl FnOnce() -> T) -> Self::Kept<T> {}
+        fn keep<T: Clone + std::fmt::Debug + Send + Sync>(
+            _make: impl FnOnce() -> T,
+        ) -> Self::Kept<T> {
+        }
 
         #[inline(always)]
-        fn kept<T: Clone + std::fmt::Debug>(_kept: &Self::Kept<T>) -> Option<T> {
+        fn kept<T: Clone + std::fmt::Debug + Send + Sync>(_kept: &Self::Kept<T>) -> Option<T> {
             None
         }
     };
@@ -168,14 +171,18 @@ pub trait Scalar: Field {
     /// value itself for expression types, whose identities the engine's constructions then
     /// show by structure (a wedge's distance at a vertex, derived again by a descendant of the
     /// wedge that lit the vertex, is one and the same expression).
-    type Kept<T: Clone + std::fmt::Debug>: Clone + Default + std::fmt::Debug;
+    type Kept<T: Clone + std::fmt::Debug + Send + Sync>: Clone
+        + Default
+        + std::fmt::Debug
+        + Send
+        + Sync;
 
     /// Keeps the value `make` builds, if this number type keeps values (`make` is not called
     /// otherwise).
-    fn keep<T: Clone + std::fmt::Debug>(make: impl FnOnce() -> T) -> Self::Kept<T>;
+    fn keep<T: Clone + std::fmt::Debug + Send + Sync>(make: impl FnOnce() -> T) -> Self::Kept<T>;
 
     /// The kept value, if this number type keeps values.
-    fn kept<T: Clone + std::fmt::Debug>(kept: &Self::Kept<T>) -> Option<T>;
+    fn kept<T: Clone + std::fmt::Debug + Send + Sync>(kept: &Self::Kept<T>) -> Option<T>;
 
     /// The sign of `self`.
     fn sign(&self) -> Sign;

@@ -606,13 +606,13 @@ impl CertifiedSign for Real {
 }
 
 impl Scalar for Real {
-    type Kept<T: Clone + std::fmt::Debug> = Option<T>;
+    type Kept<T: Clone + std::fmt::Debug + Send + Sync> = Option<T>;
 
-    fn keep<T: Clone + std::fmt::Debug>(make: impl FnOnce() -> T) -> Self::Kept<T> {
+    fn keep<T: Clone + std::fmt::Debug + Send + Sync>(make: impl FnOnce() -> T) -> Self::Kept<T> {
         Some(make())
     }
 
-    fn kept<T: Clone + std::fmt::Debug>(kept: &Self::Kept<T>) -> Option<T> {
+    fn kept<T: Clone + std::fmt::Debug + Send + Sync>(kept: &Self::Kept<T>) -> Option<T> {
         kept.clone()
     }
 

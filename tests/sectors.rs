@@ -1,0 +1,147 @@
+//! Two threads for one source vertex (`PropagateOptions::threads`): its directions split into two
+//! sectors propagated at once, each engine giving up what the other's paths beat. The distances
+//! must be the one-thread run's (up to the last bits, where geodesics from the two sectors tie)
+//! and the known answers; runs that cannot be split (other sources, stop points, the exact
+//! backend, a source without a closed fan) run on one thread.
+
+mod common;
+
+use common::{brute_force_vertex_distances, data_mesh, strategies::degenerate_case};
+use exact_geodesics::degeneracy::{degenerate_mesh, relatively_close};
+use exact_geodesics::mesh::shapes;
+use exact_geodesics::scalar::{Adaptive, Real};
+use exact_geodesics::{
+    propagate_vertices, PropagateOptions, Scalar, SurfacePoint, TriMesh, VertexField, VertexId,
+};
+use proptest::prelude::*;
+
+fn run<S: Scalar>(mesh: &TriMesh, source: u32, threads: usize) -> VertexField<'_, S> {
+    let options = PropagateOptions::default().with_threads(threads);
+    propagate_vertices::<S>(mesh, &[SurfacePoint::Vertex(VertexId(source))], &options)
+        .expect("a vertex of the mesh")
+}
+
+/// Asserts that two sectors give the one-thread distances and nearest sources, and returns how
+/// many engines ran.
+fn same_as_one_thread<S: Scalar>(mesh: &TriMesh, source: u32) -> u32 {
+    let (one, two) = (run::<S>(mesh, source, 1), run::<S>(mesh, source, 2));
+    for v in (0..mesh.vertex_count() as u32).map(VertexId) {
+        let (a, b) = (one.vertex_distance(v), two.vertex_distance(v));
+        assert!(
+            relatively_close(a, b, 1e-12),
+            "from v{source}, {v:?}: {a} on one thread, {b} on two"
+        );
+        assert_eq!(one.nearest_source(v), two.nearest_source(v), "{v:?}");
+    }
+    assert_eq!(one.stats().sectors, 1);
+    two.stats().sectors
+}
+
+fn meshes() -> Vec<(&'static str, TriMesh)> {
+    vec![
+        ("icosphere 3", shapes::icosphere(3)),
+        ("hull blob 100", data_mesh("hull_blob_100.obj")),
+        ("torus", data_mesh("parametric_torus.obj")),
+        ("bour surface", data_mesh("bour_surface.obj")),
+        ("mixed magnitudes 5", data_mesh("mixed_magnitudes_5.obj")),
+        ("delaunay terrain", data_mesh("delaunay_terrain.obj")),
+    ]
+}
+
+#[test]
+fn two_sectors_give_the_one_thread_distances_in_f64_and_adaptive() {
+    for (name, mesh) in meshes() {
+        let mut split = 0;
+        let step = (mesh.vertex_count() / 7).max(1);
+        for source in (0..mesh.vertex_count() as u32).step_by(step) {
+            eprintln!("{name}, v{source}");
+            let engines = same_as_one_thread::<f64>(&mesh, source);
+            assert_eq!(same_as_one_thread::<Adaptive>(&mesh, source), engines);
+            split += usize::from(engines == 2);
+        }
+        assert!(split > 0, "{name}: no source was split into sectors");
+    }
+}
+
+/// Independent answers: the cube's corners (closed forms) and a subdivided icosahedron's
+/// vertices by brute-force unfolding.
+#[test]
+fn two_sectors_give_the_known_answers() {
+    let cube = shapes::cube();
+    let field = run::<f64>(&cube, 0, 2);
+    assert_eq!(field.stats().sectors, 2);
+    let brute = brute_force_vertex_distances(&cube, 0, 12);
+    let opposite = (0..8)
+        .map(|v| field.vertex_distance(VertexId(v)))
+        .fold(0.0, f64::max);
+    assert!((opposite - 5f64.sqrt()).abs() < 1e-12, "{opposite}");
+    for (v, &d) in brute.iter().enumerate() {
+        let got = field.vertex_distance(VertexId(v as u32));
+        assert!((got - d).abs() < 1e-12, "cube v{v}: {got}, brute force {d}");
+    }
+    let sphere = shapes::subdivide(&shapes::icosahedron());
+    let brute = brute_force_vertex_distances(&sphere, 3, 10);
+    let field = run::<f64>(&sphere, 3, 2);
+    assert_eq!(field.stats().sectors, 2);
+    for (v, &d) in brute.iter().enumerate() {
+        let got = field.vertex_distance(VertexId(v as u32));
+        assert!(
+            (got - d).abs() < 1e-12,
+            "sphere v{v}: {got}, brute force {d}"
+        );
+    }
+}
+
+#[test]
+fn runs_that_cannot_be_split_run_on_one_thread() {
+    let sphere = shapes::icosphere(2);
+    let two = PropagateOptions::default().with_threads(2);
+    let at = |v| SurfacePoint::Vertex(VertexId(v));
+    let engines = |field: VertexField<'_, f64>| field.stats().sectors;
+    let run = |sources: &[SurfacePoint], options: &PropagateOptions| {
+        engines(propagate_vertices::<f64>(&sphere, sources, options).expect("valid"))
+    };
+    assert_eq!(run(&[at(0)], &two), 2);
+    assert_eq!(run(&[at(0), at(9)], &two), 1);
+    assert_eq!(run(&[at(0)], &two.clone().with_stop_points([at(9)])), 1);
+    let on_edge = SurfacePoint::Edge {
+        edge: exact_geodesics::EdgeId(0),
+        t: 0.5,
+    };
+    assert_eq!(run(&[on_edge], &two), 1);
+    // A corner of the flat grid has no closed fan of faces.
+    let grid = shapes::grid(6, 5, 1.0, 1.0);
+    let field = propagate_vertices::<f64>(&grid, &[at(0)], &two).expect("valid");
+    assert_eq!(field.stats().sectors, 1);
+    // The exact backend proves ties by paths that one run sees whole.
+    let exact = propagate_vertices::<Real>(&sphere, &[at(0)], &two).expect("valid");
+    assert_eq!(exact.stats().sectors, 1);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+
+    /// On the degeneracy corpus, two sectors are right wherever one thread is (against the
+    /// exact backend), and never wrong where one thread is not.
+    #[test]
+    fn two_sectors_lose_nothing_on_degenerate_meshes((kind, seed) in degenerate_case(), pick in any::<u32>()) {
+        let mesh = degenerate_mesh(kind, seed);
+        prop_assume!(mesh.vertex_count() > 0);
+        let source = pick % mesh.vertex_count() as u32;
+        prop_assume!(!mesh.vertex_faces(VertexId(source)).is_empty());
+        let exact = run::<Real>(&mesh, source, 1);
+        let one = run::<f64>(&mesh, source, 1);
+        let two = run::<f64>(&mesh, source, 2);
+        for v in (0..mesh.vertex_count() as u32).map(VertexId) {
+            let e = exact.vertex_distance(v);
+            if relatively_close(one.vertex_distance(v), e, 1e-9) {
+                prop_assert!(
+                    relatively_close(two.vertex_distance(v), e, 1e-9),
+                    "{kind:?} {seed} from v{source}, {v:?}: exact {e}, one thread {}, two {}",
+                    one.vertex_distance(v),
+                    two.vertex_distance(v)
+                );
+            }
+        }
+    }
+}
