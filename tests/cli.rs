@@ -5,7 +5,7 @@
 #![cfg(feature = "cli")]
 mod common;
 
-use common::cli::{fails_with, run, stdout, temp_file};
+use common::cli::{fails_with, refuses, run, stdout, temp_file};
 
 #[test]
 fn distance_csv_has_one_row_per_vertex_with_nearest_source() {
@@ -24,6 +24,49 @@ fn distance_csv_has_one_row_per_vertex_with_nearest_source() {
     let d2: f64 = rows[2][1].parse().expect("a number");
     assert!((d2 - 1.0).abs() < 1e-12);
     assert_eq!(rows[2][2], "1");
+}
+
+/// `--threads 2` (two sectors of the source's directions) gives the one-thread distances, and
+/// `--threads 0` is refused.
+#[test]
+fn distance_on_two_threads_gives_the_one_thread_distances() {
+    let column = |args: &[&str]| -> Vec<f64> {
+        stdout(&run(args))
+            .lines()
+            .skip(1)
+            .map(|l| {
+                l.split(',')
+                    .nth(1)
+                    .expect("a distance")
+                    .parse()
+                    .expect("a number")
+            })
+            .collect()
+    };
+    let one = column(&["distance", "gen:icosphere:3", "--source", "v:7"]);
+    let two = column(&[
+        "distance",
+        "gen:icosphere:3",
+        "--source",
+        "v:7",
+        "--threads",
+        "2",
+    ]);
+    assert_eq!(one.len(), 642);
+    for (v, (a, b)) in one.iter().zip(&two).enumerate() {
+        assert!((a - b).abs() <= 1e-12 * a.max(1.0), "v{v}: {a} and {b}");
+    }
+    refuses(
+        &[
+            "distance",
+            "gen:icosphere:3",
+            "--source",
+            "v:7",
+            "--threads",
+            "0",
+        ],
+        &["--threads"],
+    );
 }
 
 #[test]

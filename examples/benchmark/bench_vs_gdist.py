@@ -7,8 +7,9 @@ source vertex, this runs fresh processes, taking turns --repeats times:
 
 1. gdist_worker.py in the venv made by setup_venv.sh: one
    ``gdist.compute_gdist`` call, timed inside the worker;
-2. ``exact-geodesics distance MODEL --source v:S --format csv``: the distance
-   of every vertex, compared with gdist's;
+2. ``exact-geodesics distance MODEL --source v:S --format csv --threads T``:
+   the distance of every vertex, compared with gdist's (``--threads 2`` splits
+   the source's directions into two sectors propagated at once);
 3. where ``build_kirsanov.sh`` built it (or ``--kirsanov-driver PATH``), the
    plain C++ driver around the same code as gdist's (``kirsanov_driver.cpp``):
    the whole process, timed as ours is (the targets compare whole processes);
@@ -65,6 +66,7 @@ CSV_COLUMNS = [
     "vertices",
     "faces",
     "source",
+    "threads",
     "repeats",
     "ours_propagation_seconds",
     "gdist_cpu_seconds",
@@ -210,7 +212,8 @@ def run_gdist(mesh, args, raw_dir, name):
 def run_ours_distance(mesh, args, raw_dir, name):
     """One ``distance`` process: its wall time, peak RSS and the CSV it wrote."""
     csv_path = raw_dir / f"{name}.ours.csv"
-    cmd = [str(args.binary), "distance", str(mesh), "--source", f"v:{args.source}", "--format", "csv"]
+    cmd = [str(args.binary), "distance", str(mesh), "--source", f"v:{args.source}", "--format", "csv",
+           "--threads", str(args.threads)]
     run = run_measured(cmd, csv_path, args.timeout)
     return run.wall_seconds, run.peak_rss_bytes, csv_path
 
@@ -244,7 +247,7 @@ def benchmark_model(name, mesh, args, raw_dir):
     """Run gdist and our ``distance`` in turns, then our ``stats``, on one model; return its
     result dict (medians of the repeated runs)."""
     result = dict.fromkeys(CSV_COLUMNS)
-    result.update(model=name, source=args.source, repeats=args.repeats, errors=[])
+    result.update(model=name, source=args.source, threads=args.threads, repeats=args.repeats, errors=[])
     gdist_txt = ours_csv = kirsanov_txt = None
     gdist_reports, ours_runs, kirsanov_runs = [], [], []
 
@@ -529,6 +532,8 @@ def parse_args():
                         help="comma-separated model names (default: every OBJ file in --models-dir)")
     parser.add_argument("--models-dir", type=Path, default=DEFAULT_MODELS_DIR, help="folder of OBJ models")
     parser.add_argument("--source", type=int, default=0, help="0-based source vertex")
+    parser.add_argument("--threads", type=int, default=1,
+                        help="threads of our distance runs (2: two sectors of the source's directions at once)")
     parser.add_argument("--binary", type=Path, default=DEFAULT_BINARY,
                         help="exact-geodesics executable (built with cargo build --release if missing)")
     parser.add_argument("--build", action="store_true",

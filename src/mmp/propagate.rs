@@ -257,12 +257,18 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     ));
     // The source twice: the second is the sector's margins' (`sectors.rs`).
     let twice = vec![sources[0]; 2];
-    let mut engine = Engine::new(mesh, options, twice.clone(), &[], Some((first, &bounds)));
-    let mut other = Engine::new(mesh, options, twice, &[], Some((second, &bounds)));
-    std::thread::scope(|scope| {
-        let worker = scope.spawn(|| other.propagate(&mut |_: &Progress| {}));
+    let (engine, other) = std::thread::scope(|scope| {
+        let worker = scope.spawn(|| {
+            let mut other = Engine::new(mesh, options, twice.clone(), &[], Some((second, &bounds)));
+            other.propagate(&mut |_: &Progress| {});
+            other
+        });
+        let mut engine = Engine::new(mesh, options, twice.clone(), &[], Some((first, &bounds)));
         engine.propagate(&mut progress);
-        worker.join().expect("the other sector's propagation");
+        (
+            engine,
+            worker.join().expect("the other sector's propagation"),
+        )
     });
     Ok(engine.merged(other).finish(started))
 }
