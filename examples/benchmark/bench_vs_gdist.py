@@ -7,9 +7,10 @@ source vertex, this runs fresh processes, taking turns --repeats times:
 
 1. gdist_worker.py in the venv made by setup_venv.sh: one
    ``gdist.compute_gdist`` call, timed inside the worker;
-2. ``exact-geodesics distance MODEL --source v:S --format csv --threads T``:
-   the distance of every vertex, compared with gdist's (``--threads 2`` splits
-   the source's directions into two sectors propagated at once);
+2. ``exact-geodesics distance MODEL --source v:S --format csv [--threads T]``:
+   the distance of every vertex, compared with gdist's (two threads split the
+   source's directions into two sectors propagated at once; by default the
+   command uses every core on meshes of 50,000 faces or more);
 3. where ``build_kirsanov.sh`` built it (or ``--kirsanov-driver PATH``), the
    plain C++ driver around the same code as gdist's (``kirsanov_driver.cpp``):
    the whole process, timed as ours is (the targets compare whole processes);
@@ -212,8 +213,9 @@ def run_gdist(mesh, args, raw_dir, name):
 def run_ours_distance(mesh, args, raw_dir, name):
     """One ``distance`` process: its wall time, peak RSS and the CSV it wrote."""
     csv_path = raw_dir / f"{name}.ours.csv"
-    cmd = [str(args.binary), "distance", str(mesh), "--source", f"v:{args.source}", "--format", "csv",
-           "--threads", str(args.threads)]
+    cmd = [str(args.binary), "distance", str(mesh), "--source", f"v:{args.source}", "--format", "csv"]
+    if args.threads is not None:
+        cmd += ["--threads", str(args.threads)]
     run = run_measured(cmd, csv_path, args.timeout)
     return run.wall_seconds, run.peak_rss_bytes, csv_path
 
@@ -247,7 +249,7 @@ def benchmark_model(name, mesh, args, raw_dir):
     """Run gdist and our ``distance`` in turns, then our ``stats``, on one model; return its
     result dict (medians of the repeated runs)."""
     result = dict.fromkeys(CSV_COLUMNS)
-    result.update(model=name, source=args.source, threads=args.threads, repeats=args.repeats, errors=[])
+    result.update(model=name, source=args.source, threads=args.threads or "default", repeats=args.repeats, errors=[])
     gdist_txt = ours_csv = kirsanov_txt = None
     gdist_reports, ours_runs, kirsanov_runs = [], [], []
 
@@ -532,8 +534,10 @@ def parse_args():
                         help="comma-separated model names (default: every OBJ file in --models-dir)")
     parser.add_argument("--models-dir", type=Path, default=DEFAULT_MODELS_DIR, help="folder of OBJ models")
     parser.add_argument("--source", type=int, default=0, help="0-based source vertex")
-    parser.add_argument("--threads", type=int, default=1,
-                        help="threads of our distance runs (2: two sectors of the source's directions at once)")
+    parser.add_argument("--threads", type=int, default=None,
+                        help="threads of our distance runs, passed as distance --threads (default: the command's "
+                             "own, every core from 50,000 faces; 2 or more: two sectors of the source's directions "
+                             "at once)")
     parser.add_argument("--binary", type=Path, default=DEFAULT_BINARY,
                         help="exact-geodesics executable (built with cargo build --release if missing)")
     parser.add_argument("--build", action="store_true",

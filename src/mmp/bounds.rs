@@ -4,7 +4,7 @@
 //! pseudo-sources that such a path beats throughout [SSK+05 §4.2].
 
 use crate::mesh::VertexId;
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering};
 
 /// The margin, relative to the distance and the mesh's extent, by which a published distance
 /// is raised before it may beat anything: far above the rounding of a float backend's
@@ -16,6 +16,8 @@ const MARGIN: f64 = 1.0 / (1u64 << 36) as f64;
 /// `f64` (which order as the numbers do); `+inf` where none is.
 pub(crate) struct SharedBounds {
     bits: Vec<AtomicU64>,
+    /// Vertices with a distance published.
+    reached: AtomicUsize,
     /// The largest coordinate magnitude, in the units of the distances.
     extent: f64,
 }
@@ -28,6 +30,7 @@ impl SharedBounds {
             bits: (0..vertex_count)
                 .map(|_| AtomicU64::new(f64::INFINITY.to_bits()))
                 .collect(),
+            reached: AtomicUsize::new(0),
             extent,
         }
     }
@@ -35,8 +38,16 @@ impl SharedBounds {
     /// Publishes `d` (the `f64` value of the length of a path to `v`).
     pub(crate) fn lower(&self, v: VertexId, d: f64) {
         if d >= 0.0 {
-            self.bits[v.index()].fetch_min(d.to_bits(), Ordering::Relaxed);
+            let before = self.bits[v.index()].fetch_min(d.to_bits(), Ordering::Relaxed);
+            if before == f64::INFINITY.to_bits() {
+                self.reached.fetch_add(1, Ordering::Relaxed);
+            }
         }
+    }
+
+    /// Vertices with a distance published, by either engine.
+    pub(crate) fn reached(&self) -> usize {
+        self.reached.load(Ordering::Relaxed)
     }
 
     /// A length no shorter than some path to `v` found so far, by a margin above rounding

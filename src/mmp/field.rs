@@ -39,7 +39,7 @@ use std::sync::Arc;
 #[derive(Clone, Debug)]
 pub struct GeodesicField<'m, S: Scalar> {
     mesh: MeshHandle<'m>,
-    pub(crate) unfolding: Unfolding<S>,
+    pub(crate) unfolding: Arc<Unfolding<S>>,
     pub(crate) sources: Vec<SurfacePoint>,
     pub(crate) wedges: EdgeWedges<S>,
     pub(crate) vertices: Vec<Option<VertexDistance<S>>>,
@@ -49,7 +49,7 @@ pub struct GeodesicField<'m, S: Scalar> {
 impl<'m, S: Scalar> GeodesicField<'m, S> {
     pub(crate) fn new(
         mesh: &'m TriMesh,
-        unfolding: Unfolding<S>,
+        unfolding: Arc<Unfolding<S>>,
         sources: Vec<SurfacePoint>,
         wedges: EdgeWedges<S>,
         vertices: Vec<Option<VertexDistance<S>>>,

@@ -230,19 +230,24 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     let started = Instant::now();
     // Not where the run proves ties by congruent paths (`paths.rs`, `strips.rs`): those
     // proofs take every wedge of a source to be in the one run.
-    let sectors = match sources[..] {
+    let (sectors, unfolding) = match sources[..] {
         [SurfacePoint::Vertex(v)]
             if options.threads > 1
                 && options.vertices_only
                 && stop_points.is_empty()
                 && !keeps_values::<S>() =>
         {
-            split(mesh, v)
+            std::thread::scope(|scope| {
+                let sectors = scope.spawn(|| split(mesh, v));
+                let unfolding = Unfolding::new(mesh, &sources);
+                (sectors.join().expect("the sectors"), unfolding)
+            })
         }
-        _ => None,
+        _ => (None, Unfolding::new(mesh, &sources)),
     };
+    let unfolding = Arc::new(unfolding);
     let Some([first, second]) = sectors else {
-        let mut engine = Engine::new(mesh, options, sources, &stop_points, None);
+        let mut engine = Engine::new(mesh, options, (sources, &stop_points), unfolding, None);
         engine.propagate(&mut progress);
         return Ok(engine.finish(started));
     };
@@ -259,11 +264,13 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     let twice = vec![sources[0]; 2];
     let (engine, other) = std::thread::scope(|scope| {
         let worker = scope.spawn(|| {
-            let mut other = Engine::new(mesh, options, twice.clone(), &[], Some((second, &bounds)));
+            let (unfolding, sector) = (Arc::clone(&unfolding), Some((second, &bounds)));
+            let mut other = Engine::new(mesh, options, (twice.clone(), &[]), unfolding, sector);
             other.propagate(&mut |_: &Progress| {});
             other
         });
-        let mut engine = Engine::new(mesh, options, twice.clone(), &[], Some((first, &bounds)));
+        let (unfolding, sector) = (Arc::clone(&unfolding), Some((first, &bounds)));
+        let mut engine = Engine::new(mesh, options, (twice.clone(), &[]), unfolding, sector);
         engine.propagate(&mut progress);
         (
             engine,
@@ -289,7 +296,8 @@ type Child<S> = (EdgeId, [S; 2], Planar<S>, Provenance<S>);
 /// A running propagation: the wedges on the edges and the front of continuous Dijkstra.
 struct Engine<'m, S: Scalar> {
     mesh: &'m TriMesh,
-    unfolding: Unfolding<S>,
+    /// The unfolding of the mesh, shared by the engines of a run's sectors.
+    unfolding: Arc<Unfolding<S>>,
     sources: Vec<SurfacePoint>,
     wedges: WedgeLists<S>,
     front: Front<S>,
@@ -362,11 +370,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
     fn new(
         mesh: &'m TriMesh,
         options: &PropagateOptions,
-        sources: Vec<SurfacePoint>,
-        stop_points: &[SurfacePoint],
+        (sources, stop_points): (Vec<SurfacePoint>, &[SurfacePoint]),
+        unfolding: Arc<Unfolding<S>>,
         sector: Option<(Sector, &Arc<SharedBounds>)>,
     ) -> Self {
-        let unfolding = Unfolding::new(mesh, &sources);
         let stop = StopPoints::new(mesh, &unfolding, stop_points);
         let max_distance = options
             .max_distance
@@ -463,7 +470,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
             events += 1;
             if events % 8192 == 0 {
                 progress(&Progress {
-                    vertices_reached: self.front.reached(),
+                    vertices_reached: self.reached(),
                     vertex_count: self.mesh.vertex_count(),
                     front: self.unfolding.to_model(key),
                 });
@@ -514,10 +521,18 @@ impl<'m, S: Scalar> Engine<'m, S> {
             }
         }
         progress(&Progress {
-            vertices_reached: self.front.reached(),
+            vertices_reached: self.reached(),
             vertex_count: self.mesh.vertex_count(),
             front: self.unfolding.to_model(self.max_distance.min(f64::MAX)),
         });
+    }
+
+    /// Vertices with a distance so far, by this engine or the other sector's.
+    fn reached(&self) -> usize {
+        match &self.sector {
+            Some((_, bounds)) => bounds.reached(),
+            None => self.front.reached(),
+        }
     }
 
     /// Whether every stop point is final with the front at `key`.
@@ -606,7 +621,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// Lowers a vertex's distance if `distance` (the length of `path`, if kept) is better
     /// ([`Front::improve_vertex`]).
     fn improve_vertex(&mut self, v: VertexId, distance: S, reached: (SourceId, S::Kept<Path>)) {
-        let surface = (self.mesh, &self.unfolding);
+        let surface = (self.mesh, &*self.unfolding);
         self.front.improve_vertex(surface, v, distance, reached);
     }
 
@@ -614,7 +629,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     /// ([`Front::offer_vertex`]; `straight`: whether the way is straight from the wedge's
     /// pseudo-source); whether it lowered the vertex's distance.
     fn offer_vertex(&mut self, v: VertexId, d: (S, S::Kept<Path>), w: (&Wedge<S>, bool)) -> bool {
-        let surface = (self.mesh, &self.unfolding, self.sources.as_slice());
+        let surface = (self.mesh, &*self.unfolding, self.sources.as_slice());
         self.front.offer_vertex(surface, v, d, w)
     }
 

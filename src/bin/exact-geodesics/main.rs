@@ -126,10 +126,6 @@ pub struct Common {
     /// instead of warning on stderr.
     #[arg(long)]
     pub require_certified: bool,
-    /// Threads for the propagation: 2 or more propagate two sectors of a single source
-    /// vertex's directions at once where only vertex distances are asked for (`distance`).
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=1024))]
-    pub threads: u32,
 }
 
 /// `--precision-cap`: the exact backend's precision cap.
@@ -218,7 +214,7 @@ impl Common {
                 let mut options =
                     PropagateOptions::default().with_precision_cap(self.cap.precision_cap);
                 options.max_distance = self.max_distance;
-                options.with_threads(self.threads as usize)
+                options
             },
             backend: self.backend,
             require_certified: self.require_certified,
