@@ -2,13 +2,18 @@
 //! its own thread. Every geodesic leaves the source in one of them, so the shorter of the two
 //! distances at a vertex is its distance; the engines share their vertices' distances
 //! (`bounds.rs`) to give up the wedges that the other sector's paths beat, so that each
-//! covers about its own part of the surface. How evenly the work divides rests on a proxy
-//! (shortest paths along the edges, [`balanced_sides`]): from four vertices of stanford_bunny
-//! the busier engine propagated 55 % to 63 % as many wedges as a one-thread run, both
-//! together 109 % to 120 %.
+//! covers about its own part of the surface. How evenly the work divides rests on a proxy:
+//! the directions in which the vertices lie, by discrete geodesic polar coordinates
+//! ([`directions`]), halved ([`balanced_sides`]). From six vertices of stanford_bunny the
+//! busier engine propagated 56 % to 83 % (mean 64 %) as many wedges as a one-thread run, both
+//! together 111 % to 150 %; from four of rocker_arm 59 % to 62 %, three of fandisk 56 % to
+//! 71 %. The worst, from v15000 of the bunny, is the proxy's: 79 % of the vertices lie in one
+//! sector (by shortest paths along the edges instead: 55 % to 85 %, mean 64 %, on the bunny;
+//! rocker_arm 60 % to 72 %).
 
-use super::fan::fan;
+use super::fan::{fan, Fan};
 use crate::mesh::{FaceId, SourceId, TriMesh, VertexId};
+use glam::DVec3;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
@@ -78,8 +83,12 @@ pub(crate) fn split(mesh: &TriMesh, v: VertexId) -> Option<[Sector; 2]> {
     if n < 3 {
         return None;
     }
-    let beyond = vertices_beyond(mesh, v, &neighbours);
-    let (lo, hi) = balanced_sides(&beyond)?;
+    let cells = n * CELLS_PER_FACE;
+    let mut vertices = vec![0.0; cells];
+    for x in directions(mesh, v, &fan).into_iter().flatten() {
+        vertices[((x * CELLS_PER_FACE as f64) as usize).min(cells - 1)] += 1.0;
+    }
+    let (lo, hi) = balanced_sides(&vertices)?;
     let m = MARGIN_FACES;
     let (n_f, fan) = (n as f64, &fan);
     // Directions as positions round the fan: face `i` spans `[i, i + 1]` from neighbour `i`; an
@@ -142,19 +151,18 @@ pub(crate) fn split(mesh: &TriMesh, v: VertexId) -> Option<[Sector; 2]> {
 const CELLS_PER_FACE: usize = 16;
 
 /// The sides of the first sector as positions round a fan (face `i` spans `[i, i + 1]`, from
-/// neighbour `i`), given how many vertices lie beyond each neighbour (`beyond`), taken to leave
-/// evenly in the directions within half a face of its edge. The sides halve the vertices,
-/// each placed among the directions of as few vertices as can be (which side of a side such
-/// a vertex's geodesic leaves on is the proxy's guess), and else nearest a face's middle.
-fn balanced_sides(beyond: &[usize]) -> Option<(f64, f64)> {
-    let n = beyond.len();
-    let cells = n * CELLS_PER_FACE;
+/// neighbour `i`), given how many vertices' directions lie in each of its cells
+/// ([`CELLS_PER_FACE`] per face). The sides halve the vertices, each placed where as few
+/// directions lie as can be (on which side of a side a vertex's geodesic leaves is the
+/// proxy's guess), and else nearest a face's middle.
+fn balanced_sides(vertices: &[f64]) -> Option<(f64, f64)> {
+    let cells = vertices.len();
+    let n = (cells / CELLS_PER_FACE) as f64;
     let position = |c: f64| c / CELLS_PER_FACE as f64;
-    // The neighbour whose directions hold position `x`, and the weight of cell `c`.
-    let density = |x: f64| beyond[x.round() as usize % n] as f64;
-    let weight = |c: usize| density(position((c % cells) as f64 + 0.5)) / CELLS_PER_FACE as f64;
-    let half = (0..cells).map(weight).sum::<f64>() / 2.0;
-    let largest = beyond.iter().copied().max().unwrap_or(0) as f64;
+    let weight = |c: usize| vertices[c % cells];
+    let density = |x: f64| weight((x * CELLS_PER_FACE as f64) as usize);
+    let half = vertices.iter().sum::<f64>() / 2.0;
+    let largest = vertices.iter().copied().fold(0.0, f64::max);
     let off_middle = |x: f64| (x.fract() - 0.5).abs();
     let cost = |lo: f64, hi: f64| {
         density(lo) + density(hi) + 1e-3 * largest * (off_middle(lo) + off_middle(hi))
@@ -172,7 +180,7 @@ fn balanced_sides(beyond: &[usize]) -> Option<(f64, f64)> {
         let w = weight(end);
         let lo = position(start as f64);
         let hi = position(end as f64 + if w > 0.0 { (half - inside) / w } else { 0.0 });
-        if hi > lo && hi < lo + n as f64 && best.is_none_or(|b| cost(lo, hi) < b.0) {
+        if hi > lo && hi < lo + n && best.is_none_or(|b| cost(lo, hi) < b.0) {
             best = Some((cost(lo, hi), lo, hi));
         }
         if end > start {
@@ -182,41 +190,203 @@ fn balanced_sides(beyond: &[usize]) -> Option<(f64, f64)> {
     best.map(|(_, lo, hi)| (lo, hi))
 }
 
-/// For each neighbour of `v`, how many vertices are nearer to `v` along the edges through it
-/// than through any other neighbour.
-fn vertices_beyond(mesh: &TriMesh, v: VertexId, neighbours: &[VertexId]) -> Vec<usize> {
-    let mut best = vec![f64::INFINITY; mesh.vertex_count()];
-    let mut through = vec![usize::MAX; mesh.vertex_count()];
+/// Each vertex's direction from `v` as a position round its fan (face `i` spans `[i, i + 1]`),
+/// by discrete geodesic polar coordinates [MR12]: a front from `v` in the order of estimated
+/// distances, each vertex reached across a face from two reached corners by the unfolded
+/// source that their distances place, its angle interpolated between theirs, or else along
+/// an edge with its neighbour's angle. `None` for the vertices the front does not reach.
+///
+/// [MR12]: E. L. Melvær, M. Reimers, Geodesic polar coordinates on polygonal meshes, Computer
+/// Graphics Forum 31(8), 2012.
+fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<f64>> {
+    let count = mesh.vertex_count();
+    let total: f64 = fan.faces.iter().map(|f| f.2).sum();
+    let mut distance = vec![f64::INFINITY; count];
+    let mut angle = vec![f64::NAN; count];
     let mut queue = BinaryHeap::new();
-    best[v.index()] = 0.0;
-    for (i, &u) in neighbours.iter().enumerate() {
-        let d = mesh.position(u).distance(mesh.position(v));
-        if d < best[u.index()] {
-            best[u.index()] = d;
-            through[u.index()] = i;
-            queue.push((Reverse(d.to_bits()), u));
-        }
+    distance[v.index()] = 0.0;
+    for &(u, at) in &fan.neighbours {
+        distance[u.index()] = mesh.position(u).distance(mesh.position(v));
+        angle[u.index()] = at;
+        queue.push((Reverse(distance[u.index()].to_bits()), u));
     }
-    while let Some((Reverse(bits), u)) = queue.pop() {
-        let d = f64::from_bits(bits);
-        if d > best[u.index()] {
+    let p = |u: VertexId| mesh.position(u);
+    while let Some((Reverse(bits), j)) = queue.pop() {
+        if f64::from_bits(bits) > distance[j.index()] {
             continue;
         }
-        for &e in mesh.vertex_edges(u) {
-            let Some(w) = mesh.edge(e).other(u) else {
-                continue;
-            };
-            let dw = d + mesh.position(w).distance(mesh.position(u));
-            if dw < best[w.index()] {
-                best[w.index()] = dw;
-                through[w.index()] = through[u.index()];
-                queue.push((Reverse(dw.to_bits()), w));
+        for &f in mesh.vertex_faces(j) {
+            let corners = mesh.face(f);
+            for &i in corners.iter().filter(|&&i| i != j && i != v) {
+                let k = *corners
+                    .iter()
+                    .find(|&&k| k != i && k != j)
+                    .expect("a third corner");
+                let (d, a) = across(
+                    p,
+                    (j, distance[j.index()], angle[j.index()]),
+                    (k, distance[k.index()], angle[k.index()]),
+                    i,
+                    total,
+                )
+                .unwrap_or_else(|| (distance[j.index()] + p(i).distance(p(j)), angle[j.index()]));
+                if d < distance[i.index()] {
+                    distance[i.index()] = d;
+                    angle[i.index()] = a;
+                    queue.push((Reverse(d.to_bits()), i));
+                }
             }
         }
     }
-    let mut counts = vec![0; neighbours.len()];
-    for &i in through.iter().filter(|&&i| i < neighbours.len()) {
-        counts[i] += 1;
+    let position = |a: f64| {
+        let a = a.rem_euclid(total);
+        let (i, face) = fan.faces.iter().enumerate().rev().find(|(_, f)| f.1 <= a)?;
+        Some(i as f64 + ((a - face.1) / face.2).clamp(0.0, 1.0))
+    };
+    angle
+        .iter()
+        .map(|&a| if a.is_nan() { None } else { position(a) })
+        .collect()
+}
+
+/// The distance and angle that corners `j` and `k` of a face, reached at their distances and
+/// angles, give its third corner `i`: from the point their distances place on the far side of
+/// the edge `jk` from `i` (the source, unfolded), where the straight way to `i` crosses that
+/// edge; `None` where it does not, or no such point is.
+fn across(
+    p: impl Fn(VertexId) -> DVec3,
+    (j, dj, aj): (VertexId, f64, f64),
+    (k, dk, ak): (VertexId, f64, f64),
+    i: VertexId,
+    total: f64,
+) -> Option<(f64, f64)> {
+    if !dk.is_finite() || ak.is_nan() {
+        return None;
     }
-    counts
+    let (e, to_i) = (p(k) - p(j), p(i) - p(j));
+    let length = e.length();
+    let along = e / length;
+    let (xi, yi) = (to_i.dot(along), to_i.cross(along).length());
+    let xs = (dj * dj - dk * dk + length * length) / (2.0 * length);
+    let ys = -(dj * dj - xs * xs).sqrt();
+    if ys.is_nan() || yi <= 0.0 {
+        return None;
+    }
+    // Where the way from the source to `i` crosses the edge's line.
+    let t = xs + (xi - xs) * (-ys) / (yi - ys);
+    if !(0.0..=length).contains(&t) {
+        return None;
+    }
+    let d = ((xi - xs).powi(2) + (yi - ys).powi(2)).sqrt();
+    // Unwrapped across the fan's first neighbour, where angles start again at 0.
+    let ak = if (ak - aj).abs() > total / 2.0 {
+        ak - total * (ak - aj).signum()
+    } else {
+        ak
+    };
+    // The angle at the source from `j` to `i`, as a share of that from `j` to `k`: exact
+    // where the faces between lie in one plane.
+    let between = |a: [f64; 2], b: [f64; 2]| {
+        (a[0] * b[1] - a[1] * b[0])
+            .atan2(a[0] * b[0] + a[1] * b[1])
+            .abs()
+    };
+    let (to_j, to_k, to_i) = ([-xs, -ys], [length - xs, -ys], [xi - xs, yi - ys]);
+    let (alpha, beta) = (between(to_j, to_i), between(to_j, to_k));
+    let a = if beta > 0.0 {
+        aj + (ak - aj) * (alpha / beta)
+    } else {
+        aj
+    };
+    Some((d, a))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::shapes;
+    use std::f64::consts::PI;
+
+    /// On a plane, geodesic polar coordinates are the polar angles: from the middle vertex of
+    /// a flat grid, every vertex's direction is its angle from the first neighbour, turning as
+    /// the fan does.
+    #[test]
+    fn directions_on_a_plane_are_the_polar_angles() {
+        let mesh = shapes::grid(10, 10, 1.0, 1.0);
+        let v = VertexId(5 * 11 + 5);
+        let fan = fan(&mesh, v).expect("an interior vertex");
+        let at = |u: VertexId| mesh.position(u) - mesh.position(v);
+        let (first, second) = (at(fan.neighbours[0].0), at(fan.neighbours[1].0));
+        let turn = first.cross(second).z.signum();
+        let mut checked = 0;
+        for (u, position) in directions(&mesh, v, &fan).into_iter().enumerate() {
+            let Some(x) = position else { continue };
+            let p = at(VertexId(u as u32));
+            let expected = (turn * first.cross(p).z)
+                .atan2(first.dot(p))
+                .rem_euclid(2.0 * PI);
+            let (i, frac) = (x.floor() as usize % fan.faces.len(), x.fract());
+            let got = fan.faces[i].1 + frac * fan.faces[i].2;
+            let off = (got - expected).abs();
+            assert!(off.min(2.0 * PI - off) < 1e-9, "v{u}: {got} for {expected}");
+            checked += 1;
+        }
+        assert_eq!(checked, 120);
+    }
+
+    /// Evenly spread directions are halved at faces' middles; a crowd of directions is kept
+    /// off the sides.
+    #[test]
+    fn sides_halve_the_directions_away_from_crowds() {
+        let even = vec![1.0; 6 * CELLS_PER_FACE];
+        let (lo, hi) = balanced_sides(&even).expect("sides");
+        assert!((hi - lo - 3.0).abs() < 1e-12, "{lo} {hi}");
+        assert!((lo.fract() - 0.5).abs() < 1e-12, "{lo}");
+        let mut crowded = even.clone();
+        let crowd = 2 * CELLS_PER_FACE + 3;
+        crowded[crowd] = 50.0;
+        let (lo, hi) = balanced_sides(&crowded).expect("sides");
+        let half: f64 = crowded.iter().sum::<f64>() / 2.0;
+        let cell = |x: f64| (x * CELLS_PER_FACE as f64) as usize % crowded.len();
+        assert!(cell(lo) != crowd && cell(hi) != crowd, "{lo} {hi}");
+        let inside: f64 = (0..crowded.len())
+            .filter(|&c| {
+                let x = (c as f64 + 0.5) / CELLS_PER_FACE as f64;
+                (lo <= x && x <= hi) || (lo <= x + 6.0 && x + 6.0 <= hi)
+            })
+            .map(|c| crowded[c])
+            .sum();
+        assert!((inside - half).abs() <= 1.0, "{inside} of {half}");
+    }
+
+    /// The two sectors' own directions cover every face of the fan once, and each sends a
+    /// wedge along every edge of its own.
+    #[test]
+    fn the_sectors_own_every_direction_once() {
+        let mesh = shapes::icosphere(2);
+        let v = VertexId(0);
+        let fan = fan(&mesh, v).expect("a closed fan");
+        let sectors = split(&mesh, v).expect("two sectors");
+        for &(f, ..) in &fan.faces {
+            let first = mesh
+                .face(f)
+                .into_iter()
+                .find(|&c| c != v)
+                .expect("a corner");
+            let owned: f64 = sectors
+                .iter()
+                .flat_map(|s| s.pieces_of(f, first))
+                .filter(|(_, share)| *share == Share::Own)
+                .map(|([lo, hi], _)| hi - lo)
+                .sum();
+            assert!((owned - 1.0).abs() < 1e-12, "{f:?}: {owned}");
+        }
+        for &(u, _) in &fan.neighbours {
+            let own = sectors
+                .iter()
+                .filter(|s| s.edge_to(u) == Some(Share::Own))
+                .count();
+            assert!((1..=2).contains(&own), "{u:?}");
+        }
+    }
 }

@@ -170,7 +170,8 @@ pub trait Scalar: Field {
     /// the same quantity a second time: `()` for number types whose values are numbers, the
     /// value itself for expression types, whose identities the engine's constructions then
     /// show by structure (a wedge's distance at a vertex, derived again by a descendant of the
-    /// wedge that lit the vertex, is one and the same expression).
+    /// wedge that lit the vertex, is one and the same expression). `Send` and `Sync`, as the
+    /// engines of a run's two sectors run on two threads.
     type Kept<T: Clone + std::fmt::Debug + Send + Sync>: Clone
         + Default
         + std::fmt::Debug
