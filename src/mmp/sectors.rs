@@ -190,6 +190,9 @@ fn balanced_sides(vertices: &[f64]) -> Option<(f64, f64)> {
     best.map(|(_, lo, hi)| (lo, hi))
 }
 
+/// The relative amount by which an estimate must lower a vertex's distance in [`directions`].
+const IMPROVEMENT: f64 = 1e-12;
+
 /// Each vertex's direction from `v` as a position round its fan (face `i` spans `[i, i + 1]`),
 /// by discrete geodesic polar coordinates [MR12]: a front from `v` in the order of estimated
 /// distances, each vertex reached across a face from two reached corners by the unfolded
@@ -230,7 +233,9 @@ fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<f64>> {
                     total,
                 )
                 .unwrap_or_else(|| (distance[j.index()] + p(i).distance(p(j)), angle[j.index()]));
-                if d < distance[i.index()] {
+                // Only by more than rounding: estimates across faces are not a metric's, and
+                // a vertex lowered again and again by ulps would keep the front going.
+                if d < distance[i.index()] * (1.0 - IMPROVEMENT) {
                     distance[i.index()] = d;
                     angle[i.index()] = a;
                     queue.push((Reverse(d.to_bits()), i));
