@@ -431,25 +431,20 @@ impl<'m, S: Scalar> Engine<'m, S> {
         S::locate(Site::ANYWHERE);
     }
 
-    /// Whether a length known of a path to `v` (the other sector's, see `bounds.rs`) beats
-    /// `d` at `v` itself, or at the point `along` from `v` on one of its edges.
-    fn beaten_at(&self, v: VertexId, along: &S, d: &S) -> bool {
-        let Some(bound) = self.sector.as_ref().and_then(|(_, b)| b.beyond(v)) else {
-            return false;
-        };
-        (S::from_f64(bound) + along).compare_distance(d) == Ordering::Less
+    /// Whether a length known of a path to `v` by the other sector's engine (see `bounds.rs`)
+    /// beats `d` there.
+    fn beaten_at_vertex(&self, v: VertexId, d: &S) -> bool {
+        let bound = self.sector.as_ref().and_then(|(_, b)| b.beyond(v));
+        bound.is_some_and(|b| S::from_f64(b).compare_distance(d) == Ordering::Less)
     }
 
     /// Whether the other sector's paths to the ends of the wedge's edge beat it throughout
-    /// (the rule of [`Self::is_dominated_by_vertices`]).
+    /// ([`Self::beaten_from_ends`]).
     fn beaten_by_other_sector(&self, w: &Wedge<S>) -> bool {
-        if self.sector.is_none() {
+        let Some((_, bounds)) = &self.sector else {
             return false;
-        }
-        let [v0, v1] = self.unfolding.ends(self.mesh, w.edge);
-        let d = w.distance_function();
-        let from_v1 = self.unfolding.length(w.edge).clone() - &w.b0;
-        self.beaten_at(v0, &w.b1, &d.at(&w.b1)) || self.beaten_at(v1, &from_v1, &d.at(&w.b0))
+        };
+        self.beaten_from_ends(w, |v| bounds.beyond(v).map(S::from_f64))
     }
 
     fn run(&mut self, progress: &mut impl FnMut(&Progress)) {
@@ -505,7 +500,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                     if let Some((sigma, source, path)) = self.front.take_emission(v) {
                         // The other sector's engine propagates the margin's paths on.
                         let margin = self.sector.is_some() && source == MARGIN_SOURCE;
-                        if margin || self.beaten_at(v, &S::zero(), &sigma) {
+                        if margin || self.beaten_at_vertex(v, &sigma) {
                             self.stats.pruned_by_other_sector += 1;
                             continue;
                         }
@@ -1313,25 +1308,31 @@ impl<'m, S: Scalar> Engine<'m, S> {
         }
     }
 
-    /// Whether an end vertex of the wedge's edge reaches the whole range more cheaply [SSK+05
-    /// §4.2]: along the edge, `d(v0) + t` grows at slope 1, at least as fast as the wedge's
-    /// distance, so beating it at `b1` beats it everywhere (and symmetrically for `v1` at `b0`).
+    /// Whether the wedge lies beyond the maximum distance, or the distances of the ends of its
+    /// edge beat it throughout ([`Self::beaten_from_ends`]).
     fn is_dominated_by_vertices(&self, w: &Wedge<S>) -> bool {
         // Without a maximum distance no wedge is beyond it (its smallest distance is not
         // computed for nothing: a square root for most wedges).
         if self.max_distance < f64::INFINITY && w.min_distance().to_f64() > self.max_distance {
             return true;
         }
+        self.beaten_from_ends(w, |v| self.front.vertex(v).map(|k| k.distance.clone()))
+    }
+
+    /// Whether paths of lengths `known` to the ends of the wedge's edge, continued along the
+    /// edge, beat the wedge throughout [SSK+05 §4.2]: along the edge, `d(v0) + t` grows at
+    /// slope 1, at least as fast as the wedge's distance, so beating it at `b1` beats it
+    /// everywhere (and symmetrically for `v1` at `b0`).
+    fn beaten_from_ends(&self, w: &Wedge<S>, known: impl Fn(VertexId) -> Option<S>) -> bool {
         let [v0, v1] = self.unfolding.ends(self.mesh, w.edge);
         let d = w.distance_function();
-        if let Some(known) = self.front.vertex(v0) {
-            let via = known.distance.clone() + &w.b1;
-            if via.compare_distance(&d.at(&w.b1)) == Ordering::Less {
+        if let Some(known) = known(v0) {
+            if (known + &w.b1).compare_distance(&d.at(&w.b1)) == Ordering::Less {
                 return true;
             }
         }
-        if let Some(known) = self.front.vertex(v1) {
-            let via = known.distance.clone() + &(self.unfolding.length(w.edge).clone() - &w.b0);
+        if let Some(known) = known(v1) {
+            let via = known + &(self.unfolding.length(w.edge).clone() - &w.b0);
             if via.compare_distance(&d.at(&w.b0)) == Ordering::Less {
                 return true;
             }
