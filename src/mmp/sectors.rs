@@ -4,12 +4,10 @@
 //! (`bounds.rs`) to give up the wedges that the other sector's paths beat, so that each
 //! covers about its own part of the surface. How evenly the work divides rests on a proxy:
 //! the directions in which the vertices lie, by discrete geodesic polar coordinates
-//! ([`directions`]), halved ([`balanced_sides`]). From six vertices of stanford_bunny the
-//! busier engine propagated 56 % to 83 % (mean 64 %) as many wedges as a one-thread run, both
-//! together 111 % to 150 %; from four of rocker_arm 59 % to 62 %, three of fandisk 56 % to
-//! 71 %. The worst, from v15000 of the bunny, is the proxy's: 79 % of the vertices lie in one
-//! sector (by shortest paths along the edges instead: 55 % to 85 %, mean 64 %, on the bunny;
-//! rocker_arm 60 % to 72 %).
+//! ([`directions`]), halved ([`balanced_sides`]). From six vertices of stanford_bunny each
+//! engine gave 46 % to 54 % of the vertices their distances; the busier one propagated 55 % to
+//! 64 % (mean 60 %) as many wedges as a one-thread run, both together 108 % to 122 % (the
+//! bands beside the sides, where both sectors' paths are nearly as short).
 
 use super::fan::{fan, Fan};
 use crate::mesh::{FaceId, SourceId, TriMesh, VertexId};
@@ -193,11 +191,12 @@ fn balanced_sides(vertices: &[f64]) -> Option<(f64, f64)> {
 /// The relative amount by which an estimate must lower a vertex's distance in [`directions`].
 const IMPROVEMENT: f64 = 1e-12;
 
-/// Each vertex's direction from `v` as a position round its fan (face `i` spans `[i, i + 1]`),
-/// by discrete geodesic polar coordinates [MR12]: a front from `v` in the order of estimated
-/// distances, each vertex reached across a face from two reached corners by the unfolded
-/// source that their distances place, its angle interpolated between theirs, or else along
-/// an edge with its neighbour's angle. `None` for the vertices the front does not reach.
+/// Each vertex's direction from `v` as a position round its fan: `i + t` where it crosses
+/// the opposite edge of face `i` at the fraction `t` from neighbour `i`. By discrete geodesic
+/// polar coordinates [MR12]: a front from `v` in the order of estimated distances, each vertex
+/// reached across a face from two reached corners by the unfolded source that their distances
+/// place, its angle interpolated between theirs, or else along an edge with its neighbour's
+/// angle. `None` for the vertices the front does not reach.
 ///
 /// [MR12]: E. L. Melvær, M. Reimers, Geodesic polar coordinates on polygonal meshes, Computer
 /// Graphics Forum 31(8), 2012.
@@ -243,10 +242,22 @@ fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<f64>> {
             }
         }
     }
+    let n = fan.neighbours.len();
+    let reach = |i: usize| mesh.position(fan.neighbours[i % n].0).distance(p(v));
+    // Where the direction crosses its face's opposite edge, as a fraction from neighbour `i`
+    // (the sectors' pieces are parts of those edges, not of the corner angles): by the law of
+    // sines, `r_i sin t / (r_i sin t + r_{i+1} sin(c - t))` at angle `t` into a corner `c`.
     let position = |a: f64| {
         let a = a.rem_euclid(total);
         let (i, face) = fan.faces.iter().enumerate().rev().find(|(_, f)| f.1 <= a)?;
-        Some(i as f64 + ((a - face.1) / face.2).clamp(0.0, 1.0))
+        let t = (a - face.1).clamp(0.0, face.2);
+        let (near, far) = (reach(i) * t.sin(), reach(i + 1) * (face.2 - t).sin());
+        let fraction = if near + far > 0.0 {
+            near / (near + far)
+        } else {
+            0.0
+        };
+        Some(i as f64 + fraction)
     };
     angle
         .iter()
@@ -310,30 +321,39 @@ fn across(
 mod tests {
     use super::*;
     use crate::mesh::shapes;
-    use std::f64::consts::PI;
 
     /// On a plane, geodesic polar coordinates are the polar angles: from the middle vertex of
-    /// a flat grid, every vertex's direction is its angle from the first neighbour, turning as
-    /// the fan does.
+    /// a flat grid, every vertex's direction is where the straight line to it crosses the
+    /// opposite edge of a face of the fan.
     #[test]
     fn directions_on_a_plane_are_the_polar_angles() {
         let mesh = shapes::grid(10, 10, 1.0, 1.0);
         let v = VertexId(5 * 11 + 5);
         let fan = fan(&mesh, v).expect("an interior vertex");
+        let n = fan.neighbours.len();
         let at = |u: VertexId| mesh.position(u) - mesh.position(v);
-        let (first, second) = (at(fan.neighbours[0].0), at(fan.neighbours[1].0));
-        let turn = first.cross(second).z.signum();
+        let cross = |a: glam::DVec3, b: glam::DVec3| a.x * b.y - a.y * b.x;
         let mut checked = 0;
         for (u, position) in directions(&mesh, v, &fan).into_iter().enumerate() {
             let Some(x) = position else { continue };
             let p = at(VertexId(u as u32));
-            let expected = (turn * first.cross(p).z)
-                .atan2(first.dot(p))
-                .rem_euclid(2.0 * PI);
-            let (i, frac) = (x.floor() as usize % fan.faces.len(), x.fract());
-            let got = fan.faces[i].1 + frac * fan.faces[i].2;
-            let off = (got - expected).abs();
-            assert!(off.min(2.0 * PI - off) < 1e-9, "v{u}: {got} for {expected}");
+            // The ray from `v` through `p` meets `a + t (b - a)` at `t`, in front of `v`.
+            let expected: Vec<f64> = (0..n)
+                .filter_map(|i| {
+                    let (a, b) = (at(fan.neighbours[i].0), at(fan.neighbours[(i + 1) % n].0));
+                    let t = cross(p, a) / cross(b - a, p);
+                    let ahead = (a + (b - a) * t).dot(p) > 0.0;
+                    ((-1e-12..=1.0 + 1e-12).contains(&t) && ahead).then_some(i as f64 + t)
+                })
+                .collect();
+            let off = |e: f64| {
+                let d = (x - e).abs();
+                d.min(n as f64 - d)
+            };
+            assert!(
+                expected.iter().any(|&e| off(e) < 1e-9),
+                "v{u}: {x} for {expected:?}"
+            );
             checked += 1;
         }
         assert_eq!(checked, 120);
