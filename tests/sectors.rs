@@ -1,8 +1,9 @@
 //! Two threads for one source vertex (`PropagateOptions::threads`): its directions split into two
 //! sectors propagated at once, each engine giving up what the other's paths beat. The distances
 //! must be the one-thread run's (up to the last bits, where geodesics from the two sectors tie)
-//! and the known answers; runs that cannot be split (other sources, stop points, the exact
-//! backend, a source without a closed fan) run on one thread.
+//! and the known answers, round a closed fan of faces and across a boundary vertex's open one;
+//! runs that cannot be split (other sources, stop points, the exact backend, a source with no
+//! fan of faces) run on one thread.
 
 mod common;
 
@@ -79,6 +80,20 @@ fn two_sectors_give_the_known_answers() {
         let got = field.vertex_distance(VertexId(v as u32));
         assert!((got - d).abs() < 1e-12, "cube v{v}: {got}, brute force {d}");
     }
+    // On a flat grid, from a corner and from a side, distances are straight lines.
+    let grid = shapes::grid(12, 9, 1.2, 0.9);
+    for source in [0, 6] {
+        let field = run::<f64>(&grid, source, 2);
+        assert_eq!(field.stats().sectors, 2);
+        let p = grid.position(VertexId(source));
+        for v in (0..grid.vertex_count() as u32).map(VertexId) {
+            let (got, line) = (field.vertex_distance(v), grid.position(v).distance(p));
+            assert!(
+                (got - line).abs() < 1e-12,
+                "grid v{source} to {v:?}: {got}, {line}"
+            );
+        }
+    }
     let sphere = shapes::subdivide(&shapes::icosahedron());
     let brute = brute_force_vertex_distances(&sphere, 3, 10);
     let field = run::<f64>(&sphere, 3, 2);
@@ -89,6 +104,34 @@ fn two_sectors_give_the_known_answers() {
             (got - d).abs() < 1e-12,
             "sphere v{v}: {got}, brute force {d}"
         );
+    }
+}
+
+/// A boundary vertex's directions are split across its open fan of faces: on open meshes,
+/// from boundary vertices, two threads give the one-thread distances.
+#[test]
+fn boundary_sources_split_across_their_open_fans() {
+    let open = [
+        ("flat grid", shapes::grid(9, 7, 1.3, 1.0)),
+        ("open cylinder", data_mesh("open_cylinder_32_6.obj")),
+        ("bour surface", data_mesh("bour_surface.obj")),
+        ("mixed magnitudes 12", data_mesh("mixed_magnitudes_12.obj")),
+        ("delaunay terrain", data_mesh("delaunay_terrain.obj")),
+    ];
+    for (name, mesh) in open {
+        let boundary: Vec<u32> = (0..mesh.vertex_count() as u32)
+            .filter(|&v| mesh.is_boundary_vertex(VertexId(v)))
+            .collect();
+        assert!(!boundary.is_empty(), "{name}");
+        for &source in boundary.iter().step_by((boundary.len() / 6).max(1)) {
+            eprintln!("{name}, v{source}");
+            assert_eq!(
+                same_as_one_thread::<f64>(&mesh, source),
+                2,
+                "{name} v{source}"
+            );
+            assert_eq!(same_as_one_thread::<Adaptive>(&mesh, source), 2);
+        }
     }
 }
 
@@ -109,9 +152,19 @@ fn runs_that_cannot_be_split_run_on_one_thread() {
         t: 0.5,
     };
     assert_eq!(run(&[on_edge], &two), 1);
-    // A corner of the flat grid has no closed fan of faces.
-    let grid = shapes::grid(6, 5, 1.0, 1.0);
-    let field = propagate_vertices::<f64>(&grid, &[at(0)], &two).expect("valid");
+    // Where two fans of faces meet at a vertex, neither is all its directions.
+    let bowtie = TriMesh::new(
+        vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [-1.0, 0.0, 0.0],
+            [0.0, -1.0, 0.0],
+        ],
+        vec![[0, 1, 2], [0, 3, 4]],
+    )
+    .expect("a valid mesh");
+    let field = propagate_vertices::<f64>(&bowtie, &[at(0)], &two).expect("valid");
     assert_eq!(field.stats().sectors, 1);
     // The exact backend proves ties by paths that one run sees whole.
     let exact = propagate_vertices::<Real>(&sphere, &[at(0)], &two).expect("valid");

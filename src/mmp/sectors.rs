@@ -9,7 +9,7 @@
 //! 64 % (mean 60 %) as many wedges as a one-thread run, both together 108 % to 122 % (the
 //! bands beside the sides, where both sectors' paths are nearly as short).
 
-use super::fan::{fan, Fan};
+use super::fan::{fan, open_fan, Fan};
 use crate::mesh::{FaceId, SourceId, TriMesh, VertexId};
 use glam::DVec3;
 use std::cmp::Reverse;
@@ -71,78 +71,104 @@ impl Sector {
     }
 }
 
-/// Two sectors of the closed fan of faces round `v` that together cover it, with about as
-/// many vertices beyond each ([`balanced_sides`]); `None` for a vertex without a closed fan
-/// ([`fan`]).
+/// Two sectors of the fan of faces round `v` that together cover it, with about as many
+/// vertices beyond each: round a closed fan between two sides ([`balanced_sides`]), across an
+/// open one (a boundary vertex's) at one ([`halving_cut`]); `None` for a vertex with neither
+/// ([`fan`], [`open_fan`]).
 pub(crate) fn split(mesh: &TriMesh, v: VertexId) -> Option<[Sector; 2]> {
-    let fan = fan(mesh, v)?;
-    let neighbours: Vec<VertexId> = fan.neighbours.iter().map(|n| n.0).collect();
-    let n = neighbours.len();
-    if n < 3 {
+    let (fan, closed) = match fan(mesh, v) {
+        Some(fan) => (fan, true),
+        None => (open_fan(mesh, v)?, false),
+    };
+    let n = fan.faces.len();
+    if closed && n < 3 {
         return None;
     }
     let cells = n * CELLS_PER_FACE;
     let mut vertices = vec![0.0; cells];
-    for x in directions(mesh, v, &fan).into_iter().flatten() {
+    for x in directions(mesh, v, &fan, closed).into_iter().flatten() {
         vertices[((x * CELLS_PER_FACE as f64) as usize).min(cells - 1)] += 1.0;
     }
-    let (lo, hi) = balanced_sides(&vertices)?;
-    let m = MARGIN_FACES;
-    let (n_f, fan) = (n as f64, &fan);
-    // Directions as positions round the fan: face `i` spans `[i, i + 1]` from neighbour `i`; an
-    // arc is taken round the fan's circle, in spans within `[0, n]`.
-    let arc = |from: f64, to: f64| {
-        let from = from.rem_euclid(n_f);
-        let to = from + (to - from).rem_euclid(n_f);
-        if to <= n_f {
-            vec![[from, to]]
-        } else {
-            vec![[from, n_f], [0.0, to - n_f]]
-        }
+    let (m, n_f) = (MARGIN_FACES, n as f64);
+    let (own, margin) = (|x| (x, Share::Own), |x| (x, Share::Margin));
+    let spans = if closed {
+        let (lo, hi) = balanced_sides(&vertices)?;
+        // An arc round the fan's circle, in spans within `[0, n]`.
+        let arc = |from: f64, to: f64| {
+            let from = from.rem_euclid(n_f);
+            let to = from + (to - from).rem_euclid(n_f);
+            if to <= n_f {
+                vec![[from, to]]
+            } else {
+                vec![[from, n_f], [0.0, to - n_f]]
+            }
+        };
+        let arcs = |own_arc: [f64; 2], margins: [[f64; 2]; 2]| {
+            let margins = margins.into_iter().flat_map(|[a, b]| arc(a, b));
+            let own_arcs = arc(own_arc[0], own_arc[1]).into_iter().map(own);
+            own_arcs.chain(margins.map(margin)).collect::<Vec<_>>()
+        };
+        [
+            arcs([lo, hi], [[hi, hi + m], [lo - m, lo]]),
+            arcs([hi, lo + n_f], [[hi - m, hi], [lo + n_f, lo + n_f + m]]),
+        ]
+    } else {
+        let x = halving_cut(&vertices).filter(|&x| x > 0.0 && x < n_f)?;
+        [
+            vec![own([0.0, x]), margin([x, (x + m).min(n_f)])],
+            vec![own([x, n_f]), margin([(x - m).max(0.0), x])],
+        ]
     };
-    let sector = |own: [f64; 2], margins: [[f64; 2]; 2]| {
-        let spans: Vec<([f64; 2], Share)> = arc(own[0], own[1])
-            .into_iter()
-            .map(|a| (a, Share::Own))
-            .chain(
-                margins
-                    .iter()
-                    .flat_map(|m| arc(m[0], m[1]))
-                    .map(|a| (a, Share::Margin)),
-            )
-            .collect();
-        let mut pieces = Vec::new();
-        for (i, face) in fan.faces.iter().enumerate() {
-            for &([a, b], share) in &spans {
-                let (lo, hi) = (a.max(i as f64) - i as f64, b.min((i + 1) as f64) - i as f64);
-                if hi > lo {
-                    pieces.push((face.0, neighbours[i], [lo, hi], share));
-                }
+    let [first, second] = spans;
+    Some([sector(&fan, closed, first), sector(&fan, closed, second)])
+}
+
+/// The sector of a fan whose directions it takes in `spans` of positions (face `i` spans
+/// `[i, i + 1]` from neighbour `i`), the sector's own first.
+fn sector(fan: &Fan, closed: bool, spans: Vec<([f64; 2], Share)>) -> Sector {
+    let neighbours: Vec<VertexId> = fan.neighbours.iter().map(|n| n.0).collect();
+    let mut pieces = Vec::new();
+    for (i, face) in fan.faces.iter().enumerate() {
+        for &([a, b], share) in &spans {
+            let (lo, hi) = (a.max(i as f64) - i as f64, b.min((i + 1) as f64) - i as f64);
+            if hi > lo {
+                pieces.push((face.0, neighbours[i], [lo, hi], share));
             }
         }
-        // Neighbour 0 lies at both 0 and n; the sector's own directions come first.
-        let edges = (0..n)
-            .filter_map(|i| {
-                let at = |x: f64| spans.iter().filter(move |([a, b], _)| *a <= x && x <= *b);
-                let ends = if i == 0 {
-                    vec![0.0, n_f]
-                } else {
-                    vec![i as f64]
-                };
-                let mut shares = ends.into_iter().flat_map(at).map(|s| s.1);
-                let share = shares
-                    .clone()
-                    .find(|&s| s == Share::Own)
-                    .or(shares.next())?;
-                Some((neighbours[i], share))
-            })
-            .collect();
-        Sector { pieces, edges }
-    };
-    Some([
-        sector([lo, hi], [[hi, hi + m], [lo - m, lo]]),
-        sector([hi, lo + n_f], [[hi - m, hi], [lo + n_f, lo + n_f + m]]),
-    ])
+    }
+    // On a closed fan neighbour 0 lies at both 0 and n; the sector's own directions come first.
+    let n_f = fan.faces.len() as f64;
+    let edges = (0..neighbours.len())
+        .filter_map(|i| {
+            let at = |x: f64| spans.iter().filter(move |([a, b], _)| *a <= x && x <= *b);
+            let ends = if closed && i == 0 {
+                vec![0.0, n_f]
+            } else {
+                vec![i as f64]
+            };
+            let mut shares = ends.into_iter().flat_map(at).map(|s| s.1);
+            let share = shares
+                .clone()
+                .find(|&s| s == Share::Own)
+                .or(shares.next())?;
+            Some((neighbours[i], share))
+        })
+        .collect();
+    Sector { pieces, edges }
+}
+
+/// The position across an open fan (face `i` spans `[i, i + 1]`) that halves the vertices,
+/// given how many vertices' directions lie in each of its cells ([`CELLS_PER_FACE`] per face).
+fn halving_cut(vertices: &[f64]) -> Option<f64> {
+    let half = vertices.iter().sum::<f64>() / 2.0;
+    let mut inside = 0.0;
+    for (c, &w) in vertices.iter().enumerate() {
+        if w > 0.0 && inside + w >= half {
+            return Some((c as f64 + (half - inside) / w) / CELLS_PER_FACE as f64);
+        }
+        inside += w;
+    }
+    None
 }
 
 /// Cells of the fan per face in which [`balanced_sides`] places the sectors' sides.
@@ -200,9 +226,11 @@ const IMPROVEMENT: f64 = 1e-12;
 ///
 /// [MR12]: E. L. Melvær, M. Reimers, Geodesic polar coordinates on polygonal meshes, Computer
 /// Graphics Forum 31(8), 2012.
-fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<f64>> {
+fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan, closed: bool) -> Vec<Option<f64>> {
     let count = mesh.vertex_count();
     let total: f64 = fan.faces.iter().map(|f| f.2).sum();
+    // Angles round a closed fan start again at 0 after the angle sum.
+    let wrap = closed.then_some(total);
     let mut distance = vec![f64::INFINITY; count];
     let mut angle = vec![f64::NAN; count];
     let mut queue = BinaryHeap::new();
@@ -229,7 +257,7 @@ fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<f64>> {
                     (j, distance[j.index()], angle[j.index()]),
                     (k, distance[k.index()], angle[k.index()]),
                     i,
-                    total,
+                    wrap,
                 )
                 .unwrap_or_else(|| (distance[j.index()] + p(i).distance(p(j)), angle[j.index()]));
                 // Only by more than rounding: estimates across faces are not a metric's, and
@@ -248,7 +276,10 @@ fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<f64>> {
     // (the sectors' pieces are parts of those edges, not of the corner angles): by the law of
     // sines, `r_i sin t / (r_i sin t + r_{i+1} sin(c - t))` at angle `t` into a corner `c`.
     let position = |a: f64| {
-        let a = a.rem_euclid(total);
+        let a = match wrap {
+            Some(total) => a.rem_euclid(total),
+            None => a.clamp(0.0, total),
+        };
         let (i, face) = fan.faces.iter().enumerate().rev().find(|(_, f)| f.1 <= a)?;
         let t = (a - face.1).clamp(0.0, face.2);
         let (near, far) = (reach(i) * t.sin(), reach(i + 1) * (face.2 - t).sin());
@@ -274,7 +305,7 @@ fn across(
     (j, dj, aj): (VertexId, f64, f64),
     (k, dk, ak): (VertexId, f64, f64),
     i: VertexId,
-    total: f64,
+    wrap: Option<f64>,
 ) -> Option<(f64, f64)> {
     if !dk.is_finite() || ak.is_nan() {
         return None;
@@ -294,11 +325,10 @@ fn across(
         return None;
     }
     let d = ((xi - xs).powi(2) + (yi - ys).powi(2)).sqrt();
-    // Unwrapped across the fan's first neighbour, where angles start again at 0.
-    let ak = if (ak - aj).abs() > total / 2.0 {
-        ak - total * (ak - aj).signum()
-    } else {
-        ak
+    // Unwrapped across a closed fan's first neighbour, where angles start again at 0.
+    let ak = match wrap {
+        Some(total) if (ak - aj).abs() > total / 2.0 => ak - total * (ak - aj).signum(),
+        _ => ak,
     };
     // The angle at the source from `j` to `i`, as a share of that from `j` to `k`: exact
     // where the faces between lie in one plane.
@@ -334,7 +364,7 @@ mod tests {
         let at = |u: VertexId| mesh.position(u) - mesh.position(v);
         let cross = |a: glam::DVec3, b: glam::DVec3| a.x * b.y - a.y * b.x;
         let mut checked = 0;
-        for (u, position) in directions(&mesh, v, &fan).into_iter().enumerate() {
+        for (u, position) in directions(&mesh, v, &fan, true).into_iter().enumerate() {
             let Some(x) = position else { continue };
             let p = at(VertexId(u as u32));
             // The ray from `v` through `p` meets `a + t (b - a)` at `t`, in front of `v`.
@@ -385,13 +415,23 @@ mod tests {
     }
 
     /// The two sectors' own directions cover every face of the fan once, and each sends a
-    /// wedge along every edge of its own.
+    /// wedge along every edge of its own: round a closed fan and across open ones.
     #[test]
     fn the_sectors_own_every_direction_once() {
-        let mesh = shapes::icosphere(2);
-        let v = VertexId(0);
-        let fan = fan(&mesh, v).expect("a closed fan");
-        let sectors = split(&mesh, v).expect("two sectors");
+        let sphere = shapes::icosphere(2);
+        owned_once(
+            &sphere,
+            VertexId(0),
+            fan(&sphere, VertexId(0)).expect("a closed fan"),
+        );
+        let grid = shapes::grid(6, 5, 1.0, 1.0);
+        for v in [0, 3, 6, 13, 41].map(VertexId) {
+            owned_once(&grid, v, open_fan(&grid, v).expect("an open fan"));
+        }
+    }
+
+    fn owned_once(mesh: &TriMesh, v: VertexId, fan: Fan) {
+        let sectors = split(mesh, v).expect("two sectors");
         for &(f, ..) in &fan.faces {
             let first = mesh
                 .face(f)
