@@ -242,6 +242,28 @@ fn obj_quirks_are_read() {
 }
 
 #[test]
+fn obj_words_split_at_any_whitespace_and_end_at_comments() {
+    // ASCII lines are split byte by byte, the others by characters: both as `split_whitespace`.
+    let obj = "v 0\u{a0}0\u{3000}0\n\u{a0}\u{2003}\n v\t1\x0b0\x0c0#glued\nv 1 1 0 # caf\u{e9}\n\
+        v 0 1 0\nf 1 2 3#glued\nf 0001/1/1 3//2 4\n";
+    let mesh = read(obj, MeshFormat::Obj).expect("valid OBJ");
+    let corners = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+    let expected: Vec<DVec3> = corners
+        .iter()
+        .map(|&(x, y)| DVec3::new(x, y, 0.0))
+        .collect();
+    assert_eq!(mesh.positions(), &expected[..]);
+    assert_eq!(mesh.faces(), &[[0, 1, 2], [0, 2, 3]]);
+    for (text, at) in [
+        ("\u{a0}\nv 0 0 x\n", 2),
+        ("v 0 0 0\n\u{2003}\nf 1 1\u{a0}x\n", 3),
+        ("v 0 0 0\nf 1 1 0000000000000000001x\n", 2),
+    ] {
+        assert_eq!(parse_line(read(text, MeshFormat::Obj)), at, "{text:?}");
+    }
+}
+
+#[test]
 fn obj_faces_may_come_before_their_vertices() {
     let mesh = read("f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n", MeshFormat::Obj).expect("valid");
     assert_eq!(mesh.faces(), &[[0, 1, 2]]);

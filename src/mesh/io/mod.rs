@@ -249,6 +249,9 @@ impl Soup {
     }
 }
 
+/// What UTF-8 makes of U+FEFF, the byte-order mark some Windows tools start a file with.
+const BYTE_ORDER_MARK: &[u8] = "\u{feff}".as_bytes();
+
 /// Numbered lines of a text file. Bytes that are not UTF-8 become U+FFFD, so they are harmless
 /// in comments and fail as numbers, where the error can name the line.
 struct TextLines<R> {
@@ -256,6 +259,7 @@ struct TextLines<R> {
     file: String,
     number: usize,
     bytes: Vec<u8>,
+    /// The line when its bytes are not UTF-8.
     text: String,
 }
 
@@ -273,6 +277,8 @@ impl<R: BufRead> TextLines<R> {
     /// The next line that is not blank, without its line ending, and its 1-based number;
     /// `None` at the end. No format gives blank lines a meaning.
     fn next_line(&mut self) -> Result<Option<(usize, &str)>, MeshIoError> {
+        // The line is returned after the loop: returning a borrow from inside it would keep
+        // the buffers borrowed across iterations.
         loop {
             self.bytes.clear();
             let read = self
@@ -286,17 +292,31 @@ impl<R: BufRead> TextLines<R> {
                 return Ok(None);
             }
             self.number += 1;
-            self.text.clear();
-            self.text.push_str(&String::from_utf8_lossy(&self.bytes));
-            if self.number == 1 && self.text.starts_with('\u{feff}') {
-                // A byte-order mark, as some Windows tools write.
-                self.text.drain(..'\u{feff}'.len_utf8());
+            if self.number == 1 && self.bytes.starts_with(BYTE_ORDER_MARK) {
+                self.bytes.drain(..BYTE_ORDER_MARK.len());
             }
-            if !self.text.trim().is_empty() {
-                let line = self.text.trim_end_matches(['\n', '\r']);
-                return Ok(Some((self.number, line)));
+            // Blank means only whitespace characters: the first byte that is not ASCII
+            // whitespace settles it, unless it starts a longer character (U+00A0 is blank, the
+            // U+FFFD that stands for a bad byte is not).
+            let blank = match self.bytes.iter().find(|b| !b" \t\n\r\x0b\x0c".contains(b)) {
+                None => true,
+                Some(b) if b.is_ascii() => false,
+                Some(_) => String::from_utf8_lossy(&self.bytes).trim().is_empty(),
+            };
+            if !blank {
+                break;
             }
         }
+        // Borrowing the bytes when they are UTF-8 saves copying every line.
+        let text = match std::str::from_utf8(&self.bytes) {
+            Ok(text) => text,
+            Err(_) => {
+                self.text.clear();
+                self.text.push_str(&String::from_utf8_lossy(&self.bytes));
+                &self.text
+            }
+        };
+        Ok(Some((self.number, text.trim_end_matches(['\n', '\r']))))
     }
 
     /// The number of the last line read (0 before the first), where a truncated file ends.
