@@ -9,6 +9,7 @@ use super::vector::{angle, length, normalizing_power, unit, TWO_TO_64};
 use super::{EdgeId, FaceId, ValidationReport, VertexId};
 use glam::DVec3;
 use rustc_hash::FxHashMap;
+use std::collections::hash_map::Entry;
 
 /// An undirected edge: its two end vertices (`vertices[0] < vertices[1]`) and its first two
 /// faces ([`Edge::faces`]). 16 bytes: a face is kept as its index, `NO_FACE` for none (an
@@ -173,25 +174,30 @@ fn flat_star(
         };
         robust::Coord { x: u, y: v }
     };
+    // A corner of the first face is in its plane: orient3d would say so only in its slow
+    // exact stage, on every face of the star.
+    let on_plane = |q: DVec3| {
+        q == a || q == b || q == c || robust::orient3d(c3(a), c3(b), c3(c), c3(q)) == 0.0
+    };
     let turn = |[p, q, r]: [DVec3; 3]| robust::orient2d(c2(p), c2(q), c2(r)).signum();
     let first = turn([a, b, c]);
     if robust::orient2d(c2(a), c2(b), c2(c)) == 0.0 {
         return false;
     }
     if let Some([p, q, r]) = straight {
-        let in_plane = [p, q, r]
-            .iter()
-            .all(|&x| robust::orient3d(c3(a), c3(b), c3(c), c3(x)) == 0.0);
+        let in_plane = [p, q, r].into_iter().all(on_plane);
         if !in_plane || robust::orient2d(c2(p), c2(q), c2(r)) != 0.0 {
             return false;
         }
     }
     let in_plane = star.all(|f| {
-        f.iter()
-            .all(|&q| robust::orient3d(c3(a), c3(b), c3(c), c3(q)) == 0.0)
+        f.into_iter().all(on_plane)
             && robust::orient2d(c2(f[0]), c2(f[1]), c2(f[2])) != 0.0
             && turn(f) == first
     });
+    if !in_plane {
+        return false;
+    }
     // Each edge (v, w) of the star with the corner opposite it in each face that has it.
     let mut wings: Vec<(u32, u32)> = faces
         .iter()
@@ -206,12 +212,11 @@ fn flat_star(
         .collect();
     wings.sort_unstable();
     let centre = c2(at(v));
-    in_plane
-        && wings.windows(2).all(|pair| {
-            let [(w, x), (u, y)] = [pair[0], pair[1]];
-            let side = |o: u32| robust::orient2d(centre, c2(at(w as usize)), c2(at(o as usize)));
-            w != u || side(x) * side(y) < 0.0
-        })
+    wings.windows(2).all(|pair| {
+        let [(w, x), (u, y)] = [pair[0], pair[1]];
+        let side = |o: u32| robust::orient2d(centre, c2(at(w as usize)), c2(at(o as usize)));
+        w != u || side(x) * side(y) < 0.0
+    })
 }
 
 /// Whether three points lie on one line: collinear in space is collinear in each coordinate
@@ -295,8 +300,9 @@ fn is_degenerate(p: [DVec3; 3]) -> bool {
     const SINE: f64 = 64.0 * f64::EPSILON;
     let sides = [p[1] - p[0], p[2] - p[1], p[0] - p[2]];
     // The largest angle is the one between the two shortest sides.
+    let lengths = sides.map(length);
     let mut order = [0, 1, 2];
-    order.sort_by(|&i, &j| length(sides[i]).total_cmp(&length(sides[j])));
+    order.sort_by(|&i, &j| lengths[i].total_cmp(&lengths[j]));
     match (unit(sides[order[0]]), unit(sides[order[1]])) {
         (Some(u), Some(w)) => length(u.cross(w)) <= SINE,
         _ => true,
@@ -326,6 +332,114 @@ fn csr<T: Copy>(n: usize, pairs: impl Iterator<Item = (usize, T)> + Clone) -> (V
     (start, list)
 }
 
+/// No side: never a side's index ([`TriMesh::new`](super::TriMesh::new) refuses meshes of a
+/// third that many faces).
+const NO_SIDE: u32 = u32::MAX;
+
+/// The undirected edges of the faces, numbered in order of first appearance (side `i` of face
+/// `f` joins corners `i` and `i + 1`), and each face's three edges. Linear, without hashing:
+/// the sides are bucketed by their lower end (a counting sort), and within a bucket each side
+/// is matched to the first one to the same upper end by marking that end.
+fn number_edges(nv: usize, faces: &[[u32; 3]]) -> (Vec<Edge>, Vec<[EdgeId; 3]>) {
+    let ends = |f: &[u32; 3], i: usize| {
+        let (a, b) = (f[i], f[(i + 1) % 3]);
+        (a.min(b), a.max(b))
+    };
+    // The sides by lower end, each as its upper end and its index: a counting sort, written
+    // out as loops over the faces, cheaper than through `csr`'s iterator.
+    let mut start = vec![0u32; nv + 1];
+    for f in faces {
+        for i in 0..3 {
+            start[ends(f, i).0 as usize + 1] += 1;
+        }
+    }
+    for v in 0..nv {
+        start[v + 1] += start[v];
+    }
+    let mut by_low = vec![[0u32; 2]; 3 * faces.len()];
+    let mut next = start.clone();
+    for (fi, f) in faces.iter().enumerate() {
+        for i in 0..3 {
+            let (low, high) = ends(f, i);
+            let at = &mut next[low as usize];
+            by_low[*at as usize] = [high, (3 * fi + i) as u32];
+            *at += 1;
+        }
+    }
+    // The first side of each side's edge, turned below into the edge's number.
+    let mut first = vec![NO_SIDE; 3 * faces.len()];
+    let mut first_to = vec![NO_SIDE; nv];
+    let mut count = 0;
+    for v in 0..nv {
+        let bucket = &by_low[start[v] as usize..start[v + 1] as usize];
+        for &[high, h] in bucket {
+            let mark = &mut first_to[high as usize];
+            if *mark == NO_SIDE {
+                *mark = h;
+                count += 1;
+            }
+            first[h as usize] = *mark;
+        }
+        for &[high, _] in bucket {
+            first_to[high as usize] = NO_SIDE;
+        }
+    }
+    let mut edges = Vec::with_capacity(count);
+    for h in 0..first.len() {
+        let f = first[h] as usize;
+        first[h] = if f == h {
+            let (low, high) = ends(&faces[h / 3], h % 3);
+            edges.push(Edge {
+                vertices: [VertexId(low), VertexId(high)],
+                faces: [NO_FACE; 2],
+            });
+            (edges.len() - 1) as u32
+        } else {
+            first[f]
+        };
+    }
+    let face_edges = first
+        .chunks_exact(3)
+        .map(|e| [e[0], e[1], e[2]].map(EdgeId))
+        .collect();
+    (edges, face_edges)
+}
+
+/// The earlier face with the corners of face `fi` (edges `fe`), if any, given the faces already
+/// on the sides of `edges`. That face has the edge opposite the largest corner of `fi`, on
+/// one of its first two sides or, if both were taken when it came, in `crowded` (the faces
+/// that found that edge full, by sorted corners), rather than in a hash map of every face.
+fn original(
+    fi: usize,
+    faces: &[[u32; 3]],
+    fe: &[EdgeId; 3],
+    edges: &[Edge],
+    crowded: &mut FxHashMap<[u32; 3], u32>,
+) -> Option<u32> {
+    let sorted = |mut f: [u32; 3]| {
+        f.sort_unstable();
+        f
+    };
+    let corners = sorted(faces[fi]);
+    let largest = faces[fi].iter().position(|&c| c == corners[2])?;
+    let sides = edges[fe[(largest + 1) % 3].index()].faces;
+    for g in sides.into_iter().take_while(|&g| g != NO_FACE) {
+        if sorted(faces[g as usize]) == corners {
+            return Some(g);
+        }
+    }
+    if sides[1] == NO_FACE {
+        return None;
+    }
+    match crowded.entry(corners) {
+        Entry::Occupied(first) => Some(*first.get()),
+        Entry::Vacant(slot) => {
+            slot.insert(fi as u32);
+            None
+        }
+    }
+}
+
 /// The faces of edge `ei` beyond its first two, from `Topology::extra_start` and
 /// `Topology::extra_faces`.
 fn extra_of<'a>(start: &[u32], faces: &'a [FaceId], ei: usize) -> &'a [FaceId] {
@@ -340,6 +454,11 @@ struct UnionFind(Vec<u32>);
 impl UnionFind {
     fn new(n: usize) -> Self {
         UnionFind((0..n as u32).collect())
+    }
+    /// `n` singletons again, in the room of the last sets.
+    fn reset(&mut self, n: usize) {
+        self.0.clear();
+        self.0.extend(0..n as u32);
     }
     fn find(&mut self, mut x: u32) -> u32 {
         while self.0[x as usize] != x {
@@ -361,58 +480,35 @@ impl Topology {
     pub(super) fn build(positions: &[DVec3], faces: &[[u32; 3]]) -> (Topology, ValidationReport) {
         let nv = positions.len();
         let mut report = ValidationReport::default();
-        let mut edge_of: FxHashMap<(u32, u32), u32> =
-            FxHashMap::with_capacity_and_hasher(faces.len() * 2, Default::default());
-        let mut edges: Vec<Edge> = Vec::with_capacity(faces.len() * 3 / 2 + 3);
+        let (mut edges, face_edges) = number_edges(nv, faces);
         let mut extra: Vec<(usize, FaceId)> = Vec::new();
-        let mut first_with_corners: FxHashMap<[u32; 3], u32> =
-            FxHashMap::with_capacity_and_hasher(faces.len(), Default::default());
+        let mut crowded = FxHashMap::default();
         let mut is_copy = vec![false; faces.len()];
-        let mut face_edges = Vec::with_capacity(faces.len());
-        let mut forward: Vec<[bool; 2]> = Vec::with_capacity(edges.capacity());
-        for (fi, f) in faces.iter().enumerate() {
-            let mut corners = *f;
-            corners.sort_unstable();
-            let first = *first_with_corners.entry(corners).or_insert(fi as u32);
-            if first != fi as u32 {
+        let mut forward = vec![[false; 2]; edges.len()];
+        for (fi, (f, fe)) in faces.iter().zip(&face_edges).enumerate() {
+            if let Some(first) = original(fi, faces, fe, &edges, &mut crowded) {
                 is_copy[fi] = true;
                 report.duplicate_faces.push(DuplicateFace {
                     face: FaceId(fi as u32),
                     copy_of: FaceId(first),
                 });
+                continue;
             }
-            let mut fe = [EdgeId(0); 3];
             for i in 0..3 {
-                let (a, b) = (f[i], f[(i + 1) % 3]);
-                let key = (a.min(b), a.max(b));
-                let id = *edge_of.entry(key).or_insert_with(|| {
-                    edges.push(Edge {
-                        vertices: [VertexId(key.0), VertexId(key.1)],
-                        faces: [NO_FACE; 2],
-                    });
-                    forward.push([false; 2]);
-                    (edges.len() - 1) as u32
-                });
-                fe[i] = EdgeId(id);
-                if is_copy[fi] {
-                    continue;
-                }
-                let edge = &mut edges[id as usize];
+                let id = fe[i].index();
+                let edge = &mut edges[id];
                 let slot = if edge.faces[0] == NO_FACE {
                     0
                 } else if edge.faces[1] == NO_FACE {
                     1
                 } else {
-                    extra.push((id as usize, FaceId(fi as u32)));
+                    extra.push((id, FaceId(fi as u32)));
                     continue;
                 };
                 edge.faces[slot] = fi as u32;
-                forward[id as usize][slot] = a < b;
+                forward[id][slot] = f[i] < f[(i + 1) % 3];
             }
-            face_edges.push(fe);
         }
-        // Boundary edges outnumber the guess above on an open mesh, which doubled the room.
-        edges.shrink_to_fit();
         // Extra faces in input order on each edge (the sort is stable).
         let (extra_start, extra_faces) = match extra.is_empty() {
             true => (Vec::new(), Vec::new()),
@@ -474,18 +570,16 @@ impl Topology {
         let (vertex_face_start, vertex_face_list) = csr(
             nv,
             faces
+                .as_flattened()
                 .iter()
                 .enumerate()
-                .filter(|&(fi, _)| !is_copy[fi])
-                .flat_map(|(fi, f)| f.iter().map(move |&v| (v as usize, FaceId(fi as u32)))),
+                .filter(|&(h, _)| !is_copy[h / 3])
+                .map(|(h, &v)| (v as usize, FaceId((h / 3) as u32))),
         );
         let (vertex_edge_start, vertex_edge_list) = csr(
             nv,
-            edges.iter().enumerate().flat_map(|(ei, e)| {
-                e.vertices
-                    .iter()
-                    .map(move |v| (v.index(), EdgeId(ei as u32)))
-            }),
+            (0..2 * edges.len())
+                .map(|h| (edges[h / 2].vertices[h % 2].index(), EdgeId((h / 2) as u32))),
         );
 
         let mut angle_sum = vec![0.0; nv];
@@ -525,6 +619,7 @@ impl Topology {
                 boundary_vertex[v.index()] = true;
             }
         }
+        let mut fans = UnionFind::new(0);
         for v in 0..nv {
             let star =
                 &vertex_face_list[vertex_face_start[v] as usize..vertex_face_start[v + 1] as usize];
@@ -532,7 +627,7 @@ impl Topology {
                 report.unreferenced_vertices.push(VertexId(v as u32));
                 continue;
             }
-            let mut fans = UnionFind::new(star.len());
+            fans.reset(star.len());
             for e in
                 &vertex_edge_list[vertex_edge_start[v] as usize..vertex_edge_start[v + 1] as usize]
             {
@@ -563,14 +658,17 @@ impl Topology {
                 not_manifold[v.index()] = true;
             }
         }
+        // One buffer for the corners of every star.
+        let mut corners = Vec::new();
         let flat_vertex = (0..nv)
             .map(|v| {
-                let star = &vertex_face_list
-                    [vertex_face_start[v] as usize..vertex_face_start[v + 1] as usize];
-                let corners: Vec<[u32; 3]> = star.iter().map(|f| faces[f.index()]).collect();
                 if on_degenerate_face[v] || not_manifold[v] {
                     return false;
                 }
+                let star = &vertex_face_list
+                    [vertex_face_start[v] as usize..vertex_face_start[v + 1] as usize];
+                corners.clear();
+                corners.extend(star.iter().map(|f| faces[f.index()]));
                 if !boundary_vertex[v] {
                     return angle_sum[v] < 3.0 * std::f64::consts::PI
                         && flat_star(v, &corners, scaled, None);
