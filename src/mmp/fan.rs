@@ -21,6 +21,13 @@ pub(crate) struct Fan {
     pub(crate) faces: Vec<(FaceId, f64, f64)>,
 }
 
+impl Fan {
+    /// Whether the fan closes round its vertex (an open one has a neighbour more than faces).
+    pub(crate) fn is_closed(&self) -> bool {
+        self.neighbours.len() == self.faces.len()
+    }
+}
+
 /// The neighbours of `v` in turn round a closed fan of its faces, each at the angle of its edge
 /// (the first at 0), and the faces between them (the `i`-th from neighbour `i` to `i + 1`), with
 /// their starting angles and corner angles; `None` unless every edge of `v` has two faces, they
@@ -129,6 +136,7 @@ mod tests {
         for (v, sum, faces) in [(id(0, 0), FRAC_PI_2, 2), (id(4, 0), FRAC_PI_2, 1)] {
             let fan = open_fan(&grid, v).expect("a corner");
             assert_eq!((fan.faces.len(), fan.neighbours.len()), (faces, faces + 1));
+            assert!(!fan.is_closed());
             let last = fan.neighbours.last().expect("a neighbour").1;
             assert!((last - sum).abs() < 1e-12, "{v:?}: {last}");
             for end in [fan.neighbours[0].0, fan.neighbours[faces].0] {
@@ -139,7 +147,8 @@ mod tests {
         let side = open_fan(&grid, id(2, 0)).expect("a side vertex");
         let last = side.neighbours.last().expect("a neighbour").1;
         assert!((last - 2.0 * FRAC_PI_2).abs() < 1e-12, "{last}");
-        assert!(open_fan(&grid, id(2, 1)).is_none() && fan(&grid, id(2, 1)).is_some());
+        assert!(open_fan(&grid, id(2, 1)).is_none());
+        assert!(fan(&grid, id(2, 1)).is_some_and(|f| f.is_closed()));
         let bowtie = TriMesh::new(
             vec![
                 [0.0, 0.0, 0.0],

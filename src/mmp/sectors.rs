@@ -76,17 +76,14 @@ impl Sector {
 /// open one (a boundary vertex's) at one ([`halving_cut`]); `None` for a vertex with neither
 /// ([`fan`], [`open_fan`]).
 pub(crate) fn split(mesh: &TriMesh, v: VertexId) -> Option<[Sector; 2]> {
-    let (fan, closed) = match fan(mesh, v) {
-        Some(fan) => (fan, true),
-        None => (open_fan(mesh, v)?, false),
-    };
-    let n = fan.faces.len();
+    let fan = fan(mesh, v).or_else(|| open_fan(mesh, v))?;
+    let (n, closed) = (fan.faces.len(), fan.is_closed());
     if closed && n < 3 {
         return None;
     }
     let cells = n * CELLS_PER_FACE;
     let mut vertices = vec![0.0; cells];
-    for x in directions(mesh, v, &fan, closed).into_iter().flatten() {
+    for x in directions(mesh, v, &fan).into_iter().flatten() {
         vertices[((x * CELLS_PER_FACE as f64) as usize).min(cells - 1)] += 1.0;
     }
     let (m, n_f) = (MARGIN_FACES, n as f64);
@@ -120,12 +117,12 @@ pub(crate) fn split(mesh: &TriMesh, v: VertexId) -> Option<[Sector; 2]> {
         ]
     };
     let [first, second] = spans;
-    Some([sector(&fan, closed, first), sector(&fan, closed, second)])
+    Some([sector(&fan, first), sector(&fan, second)])
 }
 
 /// The sector of a fan whose directions it takes in `spans` of positions (face `i` spans
 /// `[i, i + 1]` from neighbour `i`), the sector's own first.
-fn sector(fan: &Fan, closed: bool, spans: Vec<([f64; 2], Share)>) -> Sector {
+fn sector(fan: &Fan, spans: Vec<([f64; 2], Share)>) -> Sector {
     let neighbours: Vec<VertexId> = fan.neighbours.iter().map(|n| n.0).collect();
     let mut pieces = Vec::new();
     for (i, face) in fan.faces.iter().enumerate() {
@@ -141,7 +138,7 @@ fn sector(fan: &Fan, closed: bool, spans: Vec<([f64; 2], Share)>) -> Sector {
     let edges = (0..neighbours.len())
         .filter_map(|i| {
             let at = |x: f64| spans.iter().filter(move |([a, b], _)| *a <= x && x <= *b);
-            let ends = if closed && i == 0 {
+            let ends = if fan.is_closed() && i == 0 {
                 vec![0.0, n_f]
             } else {
                 vec![i as f64]
@@ -226,11 +223,11 @@ const IMPROVEMENT: f64 = 1e-12;
 ///
 /// [MR12]: E. L. Melvær, M. Reimers, Geodesic polar coordinates on polygonal meshes, Computer
 /// Graphics Forum 31(8), 2012.
-fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan, closed: bool) -> Vec<Option<f64>> {
+fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<f64>> {
     let count = mesh.vertex_count();
     let total: f64 = fan.faces.iter().map(|f| f.2).sum();
     // Angles round a closed fan start again at 0 after the angle sum.
-    let wrap = closed.then_some(total);
+    let wrap = fan.is_closed().then_some(total);
     let mut distance = vec![f64::INFINITY; count];
     let mut angle = vec![f64::NAN; count];
     let mut queue = BinaryHeap::new();
@@ -364,7 +361,7 @@ mod tests {
         let at = |u: VertexId| mesh.position(u) - mesh.position(v);
         let cross = |a: glam::DVec3, b: glam::DVec3| a.x * b.y - a.y * b.x;
         let mut checked = 0;
-        for (u, position) in directions(&mesh, v, &fan, true).into_iter().enumerate() {
+        for (u, position) in directions(&mesh, v, &fan).into_iter().enumerate() {
             let Some(x) = position else { continue };
             let p = at(VertexId(u as u32));
             // The ray from `v` through `p` meets `a + t (b - a)` at `t`, in front of `v`.
