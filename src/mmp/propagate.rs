@@ -23,7 +23,7 @@ use super::vertex_field::propagate_vertices;
 use super::wedge::{PseudoSource, Wedge, WedgeFields};
 use super::wedge_lists::{Arrivals, Due, WedgeLists, WedgeRef};
 use crate::mesh::{EdgeId, FaceId, Side, SourceId, TriMesh, VertexId};
-use crate::scalar::{Scalar, Sign, Site, SourceDistance};
+use crate::scalar::{Scalar, Sign, Site, SourceDistance, FRONT_MARGIN};
 use std::cmp::Ordering;
 use std::sync::Arc;
 use std::time::Instant;
@@ -438,6 +438,21 @@ impl<'m, S: Scalar> Engine<'m, S> {
         bound.is_some_and(|b| S::from_f64(b).compare_distance(d) == Ordering::Less)
     }
 
+    /// The shortest length known of a path to `v`: its distance, or a length that the other
+    /// sector's engine published.
+    fn known_at(&self, v: VertexId) -> Option<S> {
+        let own = self.front.vertex(v).map(|k| k.distance.clone());
+        let other = self.sector.as_ref().and_then(|(_, b)| b.beyond(v));
+        match (own, other.map(S::from_f64)) {
+            (Some(a), Some(b)) => Some(if b.compare_distance(&a) == Ordering::Less {
+                b
+            } else {
+                a
+            }),
+            (a, b) => a.or(b),
+        }
+    }
+
     /// Whether the other sector's paths to the ends of the wedge's edge beat it throughout
     /// ([`Self::beaten_from_ends`]).
     fn beaten_by_other_sector(&self, w: &Wedge<S>) -> bool {
@@ -452,8 +467,19 @@ impl<'m, S: Scalar> Engine<'m, S> {
         while let Some(event) = self.front.pop() {
             let key = event.key();
             while let Some(c) = self.front.pop_closing(key) {
-                self.wedges
-                    .close(c.what, c.key(), self.unfolding.length(c.what));
+                let (e, at) = (c.what, c.key());
+                let known = self.unfolding.ends(self.mesh, e).map(|v| self.known_at(v));
+                let length = self.unfolding.length(e);
+                // An edge left with a gap closes once the front is past its ends' paths
+                // along it.
+                let retry = known
+                    .iter()
+                    .flatten()
+                    .map(|d| (d.to_f64() + length.to_f64()) * FRONT_MARGIN * FRONT_MARGIN)
+                    .fold(f64::INFINITY, f64::min);
+                if !self.wedges.close(e, at, length, known) && retry > at && retry.is_finite() {
+                    self.front.push_closing(e, retry);
+                }
             }
             if key > self.max_distance {
                 break;
@@ -479,12 +505,13 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 ) {
                     Due::Stale => {}
                     Due::Later(key) => self.front.requeue(event, key),
-                    Due::Now(wedge, _) if self.beaten_by_other_sector(&wedge) => {
-                        self.stats.pruned_by_other_sector += 1;
-                    }
                     Due::Now(wedge, kept) => {
-                        self.stats.wedges_propagated += 1;
-                        self.propagate_wedge(&wedge, &kept);
+                        if self.beaten_by_other_sector(&wedge) {
+                            self.stats.pruned_by_other_sector += 1;
+                        } else {
+                            self.stats.wedges_propagated += 1;
+                            self.propagate_wedge(&wedge, &kept);
+                        }
                         if let Some(key) = self.wedges.closing_key(at.edge()) {
                             self.front.push_closing(at.edge(), key);
                         }

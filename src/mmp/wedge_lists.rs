@@ -299,32 +299,58 @@ impl<S: Scalar> WedgeLists<S> {
     }
 
     /// Gives up the wedges of edge `e` (of length `length`) if the front, at `key`, is beyond
-    /// every distance they give, as the backend decides it ([`Scalar::front_passed`]), all of them have been propagated and they
-    /// cover the edge without a gap that has extent. A wedge arriving later is no nearer than
-    /// the front, so it would lose every point of the edge to them: it is dropped unseen, and
-    /// the vertex distances are those of a run that keeps every wedge. What is given up is the
-    /// distance field inside the faces, which vertex distances do not need.
-    pub(crate) fn close(&mut self, e: EdgeId, key: f64, length: &S) {
+    /// every distance they give, as the backend decides it ([`Scalar::front_passed`]), all of
+    /// them have been propagated, and a wedge arriving later, no nearer than the front, would
+    /// lose every point of the edge: to them, where they cover the edge without a gap that has
+    /// extent, or else to a path of length `known[i]` to the edge's end `i` continued along
+    /// the whole edge, if the front is beyond that too (the vertex filter's reason to drop a
+    /// wedge [SSK+05 §4.2]; in a run split into sectors, the edges the other sector's wedges
+    /// win keep gaps). Such a wedge is dropped unseen, and the vertex distances are those of
+    /// a run that keeps every wedge. What is given up is the distance field inside the faces,
+    /// which vertex distances do not need. Whether the edge was closed.
+    pub(crate) fn close(&mut self, e: EdgeId, key: f64, length: &S, known: [Option<S>; 2]) -> bool {
         let Some(closed) = self.closed.as_mut() else {
-            return;
+            return false;
         };
         let list = &mut self.lists[e.index()];
         let (Some(first), Some(last)) = (list.first(), list.last()) else {
-            return;
+            return false;
         };
-        let covered = !S::has_extent(&S::zero(), &first.b0, length)
-            && !S::has_extent(&last.b1, length, length)
+        let done = list.iter().all(|x| !x.queued)
             && list
-                .windows(2)
-                .all(|p| !S::has_extent(&p[0].b1, &p[1].b0, length));
-        let passed = list
-            .iter()
-            .all(|x| S::front_passed(&x.distance_function(), &x.b0, &x.b1, key));
-        if covered && passed && list.iter().all(|x| !x.queued) {
+                .iter()
+                .all(|x| S::front_passed(&x.distance_function(), &x.b0, &x.b1, key));
+        let covered = || {
+            !S::has_extent(&S::zero(), &first.b0, length)
+                && !S::has_extent(&last.b1, length, length)
+                && list
+                    .windows(2)
+                    .all(|p| !S::has_extent(&p[0].b1, &p[1].b0, length))
+        };
+        // The path to an end continued along the edge: the distance function of a source at
+        // that end, lit before the front by `known`.
+        let beaten_from_ends = || {
+            known
+                .into_iter()
+                .zip([S::zero(), length.clone()])
+                .any(|(d, x)| {
+                    d.is_some_and(|sigma| {
+                        let path = SourceDistance {
+                            x,
+                            y: S::zero(),
+                            sigma,
+                        };
+                        S::front_passed(&path, &S::zero(), length, key)
+                    })
+                })
+        };
+        if done && (covered() || beaten_from_ends()) {
             self.entries -= list.len();
             *list = ThinVec::new();
             closed[e.index()] = true;
+            return true;
         }
+        false
     }
 
     /// The final wedges of every edge, each list exactly sized, moved out of their entries.
@@ -721,6 +747,55 @@ mod tests {
             pseudo_source: PseudoSource::Source(SourceId(0)),
             source: SourceId(0),
         }
+    }
+
+    /// An edge whose wedges leave a gap (in a run split into sectors, where the other
+    /// sector's wedges won) is given up once the front is past them and past a known path to
+    /// one of its ends continued along the whole edge; a covered edge once the front is past
+    /// its wedges.
+    #[test]
+    fn edges_are_given_up_behind_the_front_with_a_gap_once_an_end_beats_later_wedges() {
+        let mut lists = WedgeLists::<f64>::new(2, false, true);
+        let (mut stats, mut events) = (Stats::default(), Events::default());
+        let edge = (&1.0, [VertexId(0), VertexId(1)]);
+        // Its farthest distance: sqrt(0.2^2 + 1) < 1.02, at both ends of [0, 0.4].
+        let gap = wedge([0.0, 0.4], 0.2, 0.0);
+        lists.insert(
+            (gap, Provenance::default()),
+            edge,
+            &mut stats,
+            (&mut events, None),
+        );
+        let mut covering = wedge([0.0, 1.0], 0.5, 0.0);
+        covering.edge = EdgeId(1);
+        lists.insert(
+            (covering, Provenance::default()),
+            edge,
+            &mut stats,
+            (&mut events, None),
+        );
+        // Not before its wedge is propagated.
+        assert!(!lists.close(EdgeId(0), 1.6, &1.0, [Some(0.5), None]));
+        for at in events.0.clone() {
+            assert!(matches!(lists.due(at, 1.0, &1.0, &mut stats), Due::Now(..)));
+        }
+        assert!(!lists.close(EdgeId(0), 1.1, &1.0, [None, None]));
+        // The path to an end along the edge, 0.5 + 1, is not behind a front at 1.1.
+        assert!(!lists.close(EdgeId(0), 1.1, &1.0, [Some(0.5), None]));
+        assert!(!lists.close(EdgeId(0), 1.6, &1.0, [None, None]));
+        assert!(lists.close(EdgeId(0), 1.6, &1.0, [None, Some(0.5)]));
+        // A wedge arriving later is dropped unseen.
+        let later = wedge([0.5, 1.0], 0.8, 1.0);
+        lists.insert(
+            (later, Provenance::default()),
+            edge,
+            &mut stats,
+            (&mut events, None),
+        );
+        assert!(lists.lists[0].is_empty());
+        // A covered edge needs no known end: its farthest distance sqrt(0.5^2 + 1) < 1.12.
+        assert!(!lists.close(EdgeId(1), 1.1, &1.0, [None, None]));
+        assert!(lists.close(EdgeId(1), 1.13, &1.0, [None, None]));
     }
 
     #[test]
