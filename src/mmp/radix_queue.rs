@@ -30,6 +30,9 @@ fn key_of(radix: u64) -> f64 {
     f64::from_bits(radix ^ flip)
 }
 
+/// The most items an emptied bucket keeps room for.
+const KEPT_CAPACITY: usize = 256;
+
 /// The bucket of a key (as [`radix_key`]'s integer) for the front `front`: one more than the
 /// highest bit in which they differ, 0 if they are equal.
 #[inline(always)]
@@ -101,7 +104,9 @@ impl<T> RadixQueue<T> {
                 landed |= 1 << to;
             }
             self.filled |= u128::from(landed);
-            // The emptied bucket keeps its allocation for the items filed there later.
+            // The emptied bucket keeps a small allocation for the items filed there later: a
+            // large one kept by every bucket held ten times the queue's peak.
+            items.shrink_to(KEPT_CAPACITY);
             self.buckets[b] = items;
         }
         let (radix, item) = self.buckets[0].pop().expect("items at the front's key");
