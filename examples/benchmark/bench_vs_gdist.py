@@ -10,7 +10,7 @@ source vertex, this runs fresh processes, taking turns --repeats times:
 2. ``exact-geodesics distance MODEL --source v:S --format csv [--threads T]``:
    the distance of every vertex, compared with gdist's (two threads split the
    source's directions into two sectors propagated at once; by default the
-   command uses every core on meshes of 50,000 faces or more);
+   command uses every core on meshes of 15,000 faces or more);
 3. where ``build_kirsanov.sh`` built it (or ``--kirsanov-driver PATH``), the
    plain C++ driver around the same code as gdist's (``kirsanov_driver.cpp``):
    the whole process, timed as ours is (the targets compare whole processes);
@@ -536,7 +536,7 @@ def parse_args():
     parser.add_argument("--source", type=int, default=0, help="0-based source vertex")
     parser.add_argument("--threads", type=int, default=None,
                         help="threads of our distance runs, passed as distance --threads (default: the command's "
-                             "own, every core from 50,000 faces; 2 or more: two sectors of the source's directions "
+                             "own, every core from 15,000 faces; 2 or more: two sectors of the source's directions "
                              "at once)")
     parser.add_argument("--binary", type=Path, default=DEFAULT_BINARY,
                         help="exact-geodesics executable (built with cargo build --release if missing)")

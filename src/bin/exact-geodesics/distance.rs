@@ -25,7 +25,7 @@ pub struct DistanceArgs {
     /// Write to this file instead of stdout.
     #[arg(long)]
     out: Option<PathBuf>,
-    /// Threads (default: every core on meshes of 50,000 faces or more, else 1): two propagate
+    /// Threads (default: every core on meshes of 15,000 faces or more, else 1): two propagate
     /// two sectors of a single source vertex's directions at once (f64 and adaptive); the
     /// distances are those of one thread up to the last bits where geodesics from the two
     /// sectors tie.
@@ -33,10 +33,12 @@ pub struct DistanceArgs {
     threads: Option<u32>,
 }
 
-/// Faces from which `distance` uses every core by default: on smaller meshes the second
-/// engine's start and memory outweigh its help (rocker_arm, 20k faces: 0.16 -> 0.13 s, but
-/// peak memory 13 -> 18 MiB).
-const THREADED_FACES: usize = 50_000;
+/// Faces from which `distance` uses every core by default: a second engine adds about 2 MiB
+/// (its tables and the wedges of its front), which below this outweighs its help (from v0,
+/// peak RSS, one thread against two: fandisk, 13k faces, 10.6 against 12.4 MiB, where
+/// Kirsanov's MMP takes 23.8; rocker_arm, 20k faces, 12.9 against 14.8 MiB and 0.21 against
+/// 0.16 s).
+const THREADED_FACES: usize = 15_000;
 
 /// A vertex's distance as printed: an `f64`, or certified digits of the exact value.
 enum Distance {
