@@ -302,13 +302,19 @@ impl<S: Scalar> WedgeLists<S> {
     /// every distance they give, as the backend decides it ([`Scalar::front_passed`]), all of
     /// them have been propagated, and a wedge arriving later, no nearer than the front, would
     /// lose every point of the edge: to them, where they cover the edge without a gap that has
-    /// extent, or else to a path of length `known[i]` to the edge's end `i` continued along
+    /// extent, or else to a path of length `known()[i]` to the edge's end `i` continued along
     /// the whole edge, if the front is beyond that too (the vertex filter's reason to drop a
     /// wedge [SSK+05 §4.2]; in a run split into sectors, the edges the other sector's wedges
     /// win keep gaps). Such a wedge is dropped unseen, and the vertex distances are those of
     /// a run that keeps every wedge. What is given up is the distance field inside the faces,
     /// which vertex distances do not need. Whether the edge was closed.
-    pub(crate) fn close(&mut self, e: EdgeId, key: f64, length: &S, known: [Option<S>; 2]) -> bool {
+    pub(crate) fn close(
+        &mut self,
+        e: EdgeId,
+        key: f64,
+        length: &S,
+        known: impl FnOnce() -> [Option<S>; 2],
+    ) -> bool {
         let Some(closed) = self.closed.as_mut() else {
             return false;
         };
@@ -330,7 +336,7 @@ impl<S: Scalar> WedgeLists<S> {
         // The path to an end continued along the edge: the distance function of a source at
         // that end, lit before the front by `known`.
         let beaten_from_ends = || {
-            known
+            known()
                 .into_iter()
                 .zip([S::zero(), length.clone()])
                 .any(|(d, x)| {
@@ -775,15 +781,15 @@ mod tests {
             (&mut events, None),
         );
         // Not before its wedge is propagated.
-        assert!(!lists.close(EdgeId(0), 1.6, &1.0, [Some(0.5), None]));
+        assert!(!lists.close(EdgeId(0), 1.6, &1.0, || [Some(0.5), None]));
         for at in events.0.clone() {
             assert!(matches!(lists.due(at, 1.0, &1.0, &mut stats), Due::Now(..)));
         }
-        assert!(!lists.close(EdgeId(0), 1.1, &1.0, [None, None]));
+        assert!(!lists.close(EdgeId(0), 1.1, &1.0, || [None, None]));
         // The path to an end along the edge, 0.5 + 1, is not behind a front at 1.1.
-        assert!(!lists.close(EdgeId(0), 1.1, &1.0, [Some(0.5), None]));
-        assert!(!lists.close(EdgeId(0), 1.6, &1.0, [None, None]));
-        assert!(lists.close(EdgeId(0), 1.6, &1.0, [None, Some(0.5)]));
+        assert!(!lists.close(EdgeId(0), 1.1, &1.0, || [Some(0.5), None]));
+        assert!(!lists.close(EdgeId(0), 1.6, &1.0, || [None, None]));
+        assert!(lists.close(EdgeId(0), 1.6, &1.0, || [None, Some(0.5)]));
         // A wedge arriving later is dropped unseen.
         let later = wedge([0.5, 1.0], 0.8, 1.0);
         lists.insert(
@@ -794,8 +800,8 @@ mod tests {
         );
         assert!(lists.lists[0].is_empty());
         // A covered edge needs no known end: its farthest distance sqrt(0.5^2 + 1) < 1.12.
-        assert!(!lists.close(EdgeId(1), 1.1, &1.0, [None, None]));
-        assert!(lists.close(EdgeId(1), 1.13, &1.0, [None, None]));
+        assert!(!lists.close(EdgeId(1), 1.1, &1.0, || [None, None]));
+        assert!(lists.close(EdgeId(1), 1.13, &1.0, || [None, None]));
     }
 
     #[test]
