@@ -15,6 +15,7 @@ use super::stats::Stats;
 use super::strips::OfferedWedges;
 use super::wedge::{wedge_fields, PseudoSource, Wedge, WedgeFields};
 use crate::mesh::{EdgeId, Side, SourceId, TriMesh, VertexId};
+use crate::scalar::float::farthest;
 use crate::scalar::{Scalar, Site, SourceDistance, FRONT_MARGIN};
 use std::cmp::Ordering;
 use std::ops::Range;
@@ -103,7 +104,7 @@ impl<S: Scalar> Entry<S> {
             y: self.source_y.to_f64(),
             sigma: self.sigma.to_f64(),
         };
-        d.at(&self.b0.to_f64()).max(d.at(&self.b1.to_f64()))
+        farthest(&d, self.b0.to_f64(), self.b1.to_f64())
     }
 
     /// The wedge, on `edge`.

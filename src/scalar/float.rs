@@ -100,7 +100,7 @@ impl Scalar for f64 {
     /// In `f64` arithmetic on the constructed values, with the margin [`FRONT_MARGIN`].
     #[inline(always)]
     fn front_passed(d: &SourceDistance<f64>, lo: &f64, hi: &f64, front: f64) -> bool {
-        d.at(lo).max(d.at(hi)) * FRONT_MARGIN <= front
+        farthest(d, *lo, *hi) * FRONT_MARGIN <= front
     }
 
     #[inline(always)]
@@ -199,6 +199,15 @@ impl Scalar for f64 {
         }
         Bisector { roots, lower }
     }
+}
+
+/// The larger of `d`'s distances at `lo` and `hi`, `max(d.at(lo), d.at(hi))` to the last bit
+/// with one square root: rounded sums, roots and sums are monotone, so the end farther from
+/// the foot of the pseudo-source gives the larger distance as computed too.
+#[inline(always)]
+pub(crate) fn farthest(d: &SourceDistance<f64>, lo: f64, hi: f64) -> f64 {
+    let (a, b) = (lo - d.x, hi - d.x);
+    ((a * a).max(b * b) + d.y * d.y).sqrt() + d.sigma
 }
 
 /// Whether the range `[lo, hi]` is wider than its farther end's distance from the
@@ -386,6 +395,22 @@ mod tests {
 
     fn src(x: f64, y: f64, sigma: f64) -> SourceDistance<f64> {
         SourceDistance { x, y, sigma }
+    }
+
+    proptest::proptest! {
+        /// One square root gives the larger of the two ends' distances bit for bit.
+        #[test]
+        fn farthest_is_the_larger_end_distance_to_the_last_bit(
+            x in -1e3f64..1e3, y in -1e3f64..1e3, sigma in 0f64..1e3,
+            lo in -1e3f64..1e3, width in 0f64..1e3,
+        ) {
+            let d = src(x, y, sigma);
+            let hi = lo + width;
+            proptest::prop_assert_eq!(
+                farthest(&d, lo, hi).to_bits(),
+                d.at(&lo).max(d.at(&hi)).to_bits()
+            );
+        }
     }
 
     #[test]
