@@ -756,6 +756,17 @@ mod tests {
         }
     }
 
+    /// Inserts `w` on its edge, of length 1 between vertices 0 and 1.
+    fn insert(lists: &mut WedgeLists<f64>, w: Wedge<f64>, events: &mut Events) {
+        let edge = (&1.0, [VertexId(0), VertexId(1)]);
+        lists.insert(
+            (w, Provenance::default()),
+            edge,
+            &mut Stats::default(),
+            (events, None),
+        );
+    }
+
     /// An edge whose wedges leave a gap (in a run split into sectors, where the other
     /// sector's wedges won) is given up once the front is past them and past a known path to
     /// one of its ends continued along the whole edge; a covered edge once the front is past
@@ -763,28 +774,17 @@ mod tests {
     #[test]
     fn edges_are_given_up_behind_the_front_with_a_gap_once_an_end_beats_later_wedges() {
         let mut lists = WedgeLists::<f64>::new(2, false, true);
-        let (mut stats, mut events) = (Stats::default(), Events::default());
-        let edge = (&1.0, [VertexId(0), VertexId(1)]);
+        let mut events = Events::default();
         // Its farthest distance: sqrt(0.2^2 + 1) < 1.02, at both ends of [0, 0.4].
-        let gap = wedge([0.0, 0.4], 0.2, 0.0);
-        lists.insert(
-            (gap, Provenance::default()),
-            edge,
-            &mut stats,
-            (&mut events, None),
-        );
+        insert(&mut lists, wedge([0.0, 0.4], 0.2, 0.0), &mut events);
         let mut covering = wedge([0.0, 1.0], 0.5, 0.0);
         covering.edge = EdgeId(1);
-        lists.insert(
-            (covering, Provenance::default()),
-            edge,
-            &mut stats,
-            (&mut events, None),
-        );
+        insert(&mut lists, covering, &mut events);
         // Not before its wedge is propagated.
         assert!(!lists.close(EdgeId(0), 1.6, &1.0, || [Some(0.5), None]));
         for at in events.0.clone() {
-            assert!(matches!(lists.due(at, 1.0, &1.0, &mut stats), Due::Now(..)));
+            let due = lists.due(at, 1.0, &1.0, &mut Stats::default());
+            assert!(matches!(due, Due::Now(..)));
         }
         assert!(!lists.close(EdgeId(0), 1.1, &1.0, || [None, None]));
         // The path to an end along the edge, 0.5 + 1, is not behind a front at 1.1.
@@ -792,13 +792,7 @@ mod tests {
         assert!(!lists.close(EdgeId(0), 1.6, &1.0, || [None, None]));
         assert!(lists.close(EdgeId(0), 1.6, &1.0, || [None, Some(0.5)]));
         // A wedge arriving later is dropped unseen.
-        let later = wedge([0.5, 1.0], 0.8, 1.0);
-        lists.insert(
-            (later, Provenance::default()),
-            edge,
-            &mut stats,
-            (&mut events, None),
-        );
+        insert(&mut lists, wedge([0.5, 1.0], 0.8, 1.0), &mut events);
         assert!(lists.lists[0].is_empty());
         // A covered edge needs no known end: its farthest distance sqrt(0.5^2 + 1) < 1.12.
         assert!(!lists.close(EdgeId(1), 1.1, &1.0, || [None, None]));
@@ -813,11 +807,7 @@ mod tests {
     #[test]
     fn an_event_finds_its_wedge_after_others_moved_it_and_is_stale_once_it_left() {
         let mut lists = WedgeLists::<f64>::new(1, false, false);
-        let (mut stats, mut events) = (Stats::default(), Events::default());
-        let edge = (&1.0, [VertexId(0), VertexId(1)]);
-        let mut insert = |lists: &mut WedgeLists<f64>, w: Wedge<f64>, events: &mut Events| {
-            lists.insert((w, Provenance::default()), edge, &mut stats, (events, None));
-        };
+        let mut events = Events::default();
         insert(&mut lists, wedge([0.4, 0.6], 0.5, 0.0), &mut events);
         insert(&mut lists, wedge([0.6, 1.0], 0.8, 0.5), &mut events);
         // Two wedges before the first one move it two places to the right.
