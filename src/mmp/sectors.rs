@@ -242,8 +242,9 @@ fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<f64>> {
         queue.push((Reverse(distance[u.index()].to_bits()), u));
     }
     let p = |u: VertexId| mesh.position(u);
-    while let Some((Reverse(bits), j)) = queue.pop() {
-        if f64::from_bits(bits) > distance[j.index()] || settled[j.index()] {
+    // A vertex queued again at a lower distance is settled by that entry, which comes first.
+    while let Some((_, j)) = queue.pop() {
+        if settled[j.index()] {
             continue;
         }
         settled[j.index()] = true;
