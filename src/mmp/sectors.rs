@@ -5,7 +5,8 @@
 //! covers about its own part of the surface. How evenly the work divides rests on a proxy:
 //! the directions in which the vertices lie, by discrete geodesic polar coordinates
 //! ([`directions`]), halved ([`balanced_sides`]). From six vertices of stanford_bunny each
-//! engine gave 46 % to 54 % of the vertices their distances; the busier one propagated 56 % to
+//! engine gave 46 % to 54 % of the vertices their distances (measured before `directions`
+//! settled each vertex once); the busier one propagated 56 % to
 //! 65 % (mean 59 %; v0, v5000, ..., v30000) as many wedges as a one-thread run, both together
 //! 107 % to 127 % (the bands beside the sides, where both sectors' paths are nearly as short,
 //! and how far one engine runs ahead of the other, which varies from run to run).
