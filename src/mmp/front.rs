@@ -304,15 +304,6 @@ impl<S: Scalar> Front<S> {
         }
     }
 
-    /// Names source `to` as the nearest of every vertex nearest to `from` (the same point).
-    pub(crate) fn rename_source(&mut self, from: SourceId, to: SourceId) {
-        for d in self.vertices.iter_mut().flatten() {
-            if d.source == from {
-                d.source = to;
-            }
-        }
-    }
-
     /// The vertices' distances at the end of a run, those beyond `max` (the run's maximum
     /// distance) dropped as unreachable.
     pub(crate) fn into_vertices(self, max: f64) -> Vec<Option<VertexDistance<S>>> {

@@ -12,7 +12,7 @@ use super::paths::{continued, CongruentPaths, Path};
 use super::planar::Planar;
 use super::provenance::{keeps_values, Anchor, Light, Provenance};
 use super::rounded_gap::{distance_through, end_beside, gap_fraction};
-use super::sectors::{split, Sector, Share, MARGIN_SOURCE};
+use super::sectors::{split, Sector};
 use super::shadow::Shadow;
 use super::source::{PointError, SurfacePoint};
 use super::stats::Stats;
@@ -260,17 +260,15 @@ pub fn propagate_with_progress<'m, S: Scalar>(
         mesh.vertex_count(),
         extent * mesh.unit_scale(),
     ));
-    // The source twice: the second is the sector's margins' (`sectors.rs`).
-    let twice = vec![sources[0]; 2];
     let (engine, other) = std::thread::scope(|scope| {
         let worker = scope.spawn(|| {
             let (unfolding, sector) = (Arc::clone(&unfolding), Some((second, &bounds)));
-            let mut other = Engine::new(mesh, options, (twice.clone(), &[]), unfolding, sector);
+            let mut other = Engine::new(mesh, options, (sources.clone(), &[]), unfolding, sector);
             other.propagate(&mut |_: &Progress| {});
             other
         });
         let (unfolding, sector) = (Arc::clone(&unfolding), Some((first, &bounds)));
-        let mut engine = Engine::new(mesh, options, (twice.clone(), &[]), unfolding, sector);
+        let mut engine = Engine::new(mesh, options, (sources.clone(), &[]), unfolding, sector);
         engine.propagate(&mut progress);
         (
             engine,
@@ -415,13 +413,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
     fn propagate(&mut self, progress: &mut impl FnMut(&Progress)) {
         S::begin_run(self.precision_cap);
         S::take_counts();
-        // A sector's engine emits its one source once, the margins' with it.
-        let emitted = if self.sector.is_some() {
-            1
-        } else {
-            self.sources.len()
-        };
-        for k in 0..emitted {
+        for k in 0..self.sources.len() {
             let point = self.sources[k];
             self.emit_source(SourceId(k as u32), &point);
         }
@@ -521,9 +513,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 }
                 EventKind::Vertex(v) => {
                     if let Some((sigma, source, path)) = self.front.take_emission(v) {
-                        // The other sector's engine propagates the margin's paths on.
-                        let margin = self.sector.is_some() && source == MARGIN_SOURCE;
-                        if margin || self.beaten_at_vertex(v, &sigma) {
+                        if self.beaten_at_vertex(v, &sigma) {
                             self.stats.pruned_by_other_sector += 1;
                             continue;
                         }
@@ -568,8 +558,6 @@ impl<'m, S: Scalar> Engine<'m, S> {
         self.stats.absorb(other.stats);
         self.stats.peak_queue += other.front.peak_queue();
         self.front.take_shorter(other.front);
-        self.front.rename_source(MARGIN_SOURCE, SourceId(0));
-        self.sources.truncate(1);
         self
     }
 
@@ -795,14 +783,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
         let into_face = |f: FaceId| shadow.as_ref().is_none_or(|s| s.meets_face(f));
         let along_edge = |u: VertexId| shadow.as_ref().is_none_or(|s| s.meets_edge(u));
         // A source whose directions two engines split sends wedges only into its engine's
-        // sector, those of the sector's margins as the margins' source (see `sectors.rs`).
+        // sector (see `sectors.rs`).
         let sector = match source {
             PseudoSource::Source(_) => self.sector.as_ref().map(|s| s.0.clone()),
             PseudoSource::Vertex(_) => None,
-        };
-        let of_share = |share: Share| match share {
-            Share::Own => k,
-            Share::Margin => MARGIN_SOURCE,
         };
         for &f in mesh
             .vertex_faces(v)
@@ -836,9 +820,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 continue;
             };
             let first = self.unfolding.ends(mesh, g)[0];
-            for ([lo, hi], share) in sector.pieces_of(f, first) {
-                let k = of_share(share);
-                let source = PseudoSource::Source(k);
+            for [lo, hi] in sector.pieces_of(f, first) {
                 let kept = kept.clone();
                 let (mut w, kept) =
                     self.wedge_on(g, at.clone(), side, sigma.clone(), (source, k), kept);
@@ -851,17 +833,9 @@ impl<'m, S: Scalar> Engine<'m, S> {
             let Some(other) = mesh.edge(g).other(v) else {
                 continue;
             };
-            let k = match &sector {
-                Some(sector) => match sector.edge_to(other) {
-                    Some(share) => of_share(share),
-                    None => continue,
-                },
-                None => k,
-            };
-            let source = match source {
-                PseudoSource::Source(_) => PseudoSource::Source(k),
-                vertex => vertex,
-            };
+            if sector.as_ref().is_some_and(|s| !s.sends_along(other)) {
+                continue;
+            }
             if !along_edge(other) {
                 continue;
             }

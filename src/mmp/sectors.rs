@@ -4,46 +4,31 @@
 //! (`bounds.rs`) to give up the wedges that the other sector's paths beat, so that each
 //! covers about its own part of the surface. How evenly the work divides rests on a proxy:
 //! the directions in which the vertices lie, by discrete geodesic polar coordinates
-//! ([`directions`]), halved ([`balanced_sides`]). From six vertices of stanford_bunny each
-//! engine gave 46 % to 54 % of the vertices their distances (measured before `directions`
-//! settled each vertex once); the busier one propagated 56 % to
-//! 65 % (mean 59 %; v0, v5000, ..., v30000) as many wedges as a one-thread run, both together
-//! 107 % to 127 % (the bands beside the sides, where both sectors' paths are nearly as short,
-//! and how far one engine runs ahead of the other, which varies from run to run).
+//! ([`directions`]), halved ([`balanced_sides`]). From six vertices of stanford_bunny (v0, v5000,
+//! ..., v25000, two runs each) the busier engine propagated 54 % to 67 % (mean 60 %) as many
+//! wedges as a one-thread run, both together 113 % on average: the engine that runs ahead
+//! takes on the other's ground before that one's paths there are published, so both stay busy
+//! to the end whatever the balance; on icosphere5 each propagates 50.4 %.
 
 use super::fan::{fan, open_fan, Fan};
-use crate::mesh::{FaceId, SourceId, TriMesh, VertexId};
+use crate::mesh::{FaceId, TriMesh, VertexId};
 use glam::DVec3;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
-/// Which of a sector's directions a wedge of its source carries: the sector's own, or a
-/// margin it shares with the other sector.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Share {
-    Own,
-    Margin,
-}
-
-/// The source a sector's engine names for the wedges of its margins: the same point, listed
-/// a second time.
-pub(crate) const MARGIN_SOURCE: SourceId = SourceId(1);
-
-/// Margins, in faces of the fan, shared with the other sector on either side of a sector.
-const MARGIN_FACES: f64 = 0.3;
-
-/// The directions of a source vertex that one sector's engine propagates: its own and, on
-/// either side, a margin that the other sector owns. The margins' wedges trim, on the edges,
-/// the wedges that the sector's pseudo-sources near its sides send across them; vertices
-/// reached through a margin do not act as pseudo-sources (the other sector's engine has the
-/// same paths to them).
+/// The directions of a source vertex that one sector's engine propagates. The two sectors
+/// meet at their sides and share no directions: a margin of 0.3 faces of the fan that each
+/// also propagated on either side (so that its wedges would trim, on the edges, the wedges the
+/// sector's pseudo-sources near its sides sent across them) made each engine propagate 59 %
+/// instead of 50 % of a one-thread run's wedges on icosphere5 and 65 % instead of 51 % on
+/// unit_sphere (v0, v1000, v2000, v3000), and no fewer on any shared model.
 #[derive(Clone, Debug)]
 pub(crate) struct Sector {
-    /// Parts of faces: the face, its first neighbour in turn round the fan, the part of its
-    /// opposite edge as fractions from that neighbour, and whose directions those are.
-    pieces: Vec<(FaceId, VertexId, [f64; 2], Share)>,
-    /// The neighbours along whose edges the sector sends wedges, and whose directions those are.
-    edges: Vec<(VertexId, Share)>,
+    /// Parts of faces: the face, its first neighbour in turn round the fan, and the part of its
+    /// opposite edge as fractions from that neighbour.
+    pieces: Vec<(FaceId, VertexId, [f64; 2])>,
+    /// The neighbours along whose edges the sector sends wedges.
+    edges: Vec<VertexId>,
 }
 
 impl Sector {
@@ -53,23 +38,22 @@ impl Sector {
         &self,
         f: FaceId,
         first: VertexId,
-    ) -> impl Iterator<Item = ([f64; 2], Share)> + '_ {
+    ) -> impl Iterator<Item = [f64; 2]> + '_ {
         self.pieces
             .iter()
             .filter(move |p| p.0 == f)
-            .map(move |&(_, from, [lo, hi], share)| {
-                let range = if from == first {
+            .map(move |&(_, from, [lo, hi])| {
+                if from == first {
                     [lo, hi]
                 } else {
                     [1.0 - hi, 1.0 - lo]
-                };
-                (range, share)
+                }
             })
     }
 
-    /// Whether the sector sends a wedge along the edge to neighbour `u`, and whose.
-    pub(crate) fn edge_to(&self, u: VertexId) -> Option<Share> {
-        self.edges.iter().find(|e| e.0 == u).map(|e| e.1)
+    /// Whether the sector sends a wedge along the edge to neighbour `u`.
+    pub(crate) fn sends_along(&self, u: VertexId) -> bool {
+        self.edges.contains(&u)
     }
 }
 
@@ -88,8 +72,7 @@ pub(crate) fn split(mesh: &TriMesh, v: VertexId) -> Option<[Sector; 2]> {
     for x in directions(mesh, v, &fan).into_iter().flatten() {
         vertices[((x * CELLS_PER_FACE as f64) as usize).min(cells - 1)] += 1.0;
     }
-    let (m, n_f) = (MARGIN_FACES, n as f64);
-    let (own, margin) = (|x| (x, Share::Own), |x| (x, Share::Margin));
+    let n_f = n as f64;
     let spans = if closed {
         let (lo, hi) = balanced_sides(&vertices)?;
         // An arc round the fan's circle, in spans within `[0, n]`.
@@ -102,56 +85,41 @@ pub(crate) fn split(mesh: &TriMesh, v: VertexId) -> Option<[Sector; 2]> {
                 vec![[from, n_f], [0.0, to - n_f]]
             }
         };
-        let arcs = |own_arc: [f64; 2], margins: [[f64; 2]; 2]| {
-            let margins = margins.into_iter().flat_map(|[a, b]| arc(a, b));
-            let own_arcs = arc(own_arc[0], own_arc[1]).into_iter().map(own);
-            own_arcs.chain(margins.map(margin)).collect::<Vec<_>>()
-        };
-        [
-            arcs([lo, hi], [[hi, hi + m], [lo - m, lo]]),
-            arcs([hi, lo + n_f], [[hi - m, hi], [lo + n_f, lo + n_f + m]]),
-        ]
+        [arc(lo, hi), arc(hi, lo + n_f)]
     } else {
         let x = halving_cut(&vertices).filter(|&x| x > 0.0 && x < n_f)?;
-        [
-            vec![own([0.0, x]), margin([x, (x + m).min(n_f)])],
-            vec![own([x, n_f]), margin([(x - m).max(0.0), x])],
-        ]
+        [vec![[0.0, x]], vec![[x, n_f]]]
     };
     let [first, second] = spans;
     Some([sector(&fan, first), sector(&fan, second)])
 }
 
 /// The sector of a fan whose directions it takes in `spans` of positions (face `i` spans
-/// `[i, i + 1]` from neighbour `i`), the sector's own first.
-fn sector(fan: &Fan, spans: Vec<([f64; 2], Share)>) -> Sector {
+/// `[i, i + 1]` from neighbour `i`).
+fn sector(fan: &Fan, spans: Vec<[f64; 2]>) -> Sector {
     let neighbours: Vec<VertexId> = fan.neighbours.iter().map(|n| n.0).collect();
     let mut pieces = Vec::new();
     for (i, face) in fan.faces.iter().enumerate() {
-        for &([a, b], share) in &spans {
+        for &[a, b] in &spans {
             let (lo, hi) = (a.max(i as f64) - i as f64, b.min((i + 1) as f64) - i as f64);
             if hi > lo {
-                pieces.push((face.0, neighbours[i], [lo, hi], share));
+                pieces.push((face.0, neighbours[i], [lo, hi]));
             }
         }
     }
-    // On a closed fan neighbour 0 lies at both 0 and n; the sector's own directions come first.
+    // On a closed fan neighbour 0 lies at both 0 and n.
     let n_f = fan.faces.len() as f64;
     let edges = (0..neighbours.len())
-        .filter_map(|i| {
-            let at = |x: f64| spans.iter().filter(move |([a, b], _)| *a <= x && x <= *b);
+        .filter(|&i| {
             let ends = if fan.is_closed() && i == 0 {
                 vec![0.0, n_f]
             } else {
                 vec![i as f64]
             };
-            let mut shares = ends.into_iter().flat_map(at).map(|s| s.1);
-            let share = shares
-                .clone()
-                .find(|&s| s == Share::Own)
-                .or(shares.next())?;
-            Some((neighbours[i], share))
+            ends.into_iter()
+                .any(|x| spans.iter().any(|&[a, b]| a <= x && x <= b))
         })
+        .map(|i| neighbours[i])
         .collect();
     Sector { pieces, edges }
 }
@@ -416,8 +384,8 @@ mod tests {
         assert!((inside - half).abs() <= 1.0, "{inside} of {half}");
     }
 
-    /// The two sectors' own directions cover every face of the fan once, and each sends a
-    /// wedge along every edge of its own: round a closed fan and across open ones.
+    /// The two sectors' directions cover every face of the fan once, and one or both (at a
+    /// side) send a wedge along each edge: round a closed fan and across open ones.
     #[test]
     fn the_sectors_own_every_direction_once() {
         let sphere = shapes::icosphere(2);
@@ -443,16 +411,12 @@ mod tests {
             let owned: f64 = sectors
                 .iter()
                 .flat_map(|s| s.pieces_of(f, first))
-                .filter(|(_, share)| *share == Share::Own)
-                .map(|([lo, hi], _)| hi - lo)
+                .map(|[lo, hi]| hi - lo)
                 .sum();
             assert!((owned - 1.0).abs() < 1e-12, "{f:?}: {owned}");
         }
         for &(u, _) in &fan.neighbours {
-            let own = sectors
-                .iter()
-                .filter(|s| s.edge_to(u) == Some(Share::Own))
-                .count();
+            let own = sectors.iter().filter(|s| s.sends_along(u)).count();
             assert!((1..=2).contains(&own), "{u:?}");
         }
     }
