@@ -50,8 +50,7 @@ def compute_gdist(
     """
     solver = _solver(vertices, triangles, is_one_indexed)
     sources = np.zeros(1, dtype=np.int64) if source_indices is None else source_indices
-    field = solver.propagate(sources, max_distance=_max_distance(max_distance))
-    distances = field.distances
+    distances, _ = solver.vertex_distances(sources, max_distance=_max_distance(max_distance))
     if target_indices is None:
         return distances
     return distances[_vertex_indices(target_indices, solver.vertex_count, "target_indices")]

@@ -54,6 +54,15 @@ class GeodesicSolver:
     ) -> GeodesicField:
         """The distance field of ``sources``, stopped once ``stop_points`` are final (GIL
         released while propagating)."""
+    def vertex_distances(
+        self,
+        sources: Union[Point, Indices, Sequence[Point]],
+        max_distance: Optional[float] = None,
+        threads: Optional[int] = None,
+    ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64]]:
+        """``(distances, nearest_source)`` of every vertex, as ``propagate`` gives them, without
+        the field: a run's memory is its front's, and a single source vertex's directions are
+        split between two threads (all cores if ``threads`` is ``None``)."""
     def distance_matrix(
         self,
         sources: Union[Point, Indices, Sequence[Point]],

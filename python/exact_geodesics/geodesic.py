@@ -67,8 +67,7 @@ class PyGeodesicAlgorithmExact:
         """
         limit = None if max_distance is None or max_distance >= 1e100 else max_distance
         sources = np.asarray(source_indices).reshape(-1)
-        field = self._solver.propagate(sources, max_distance=limit)
-        distances, best = field.distances, field.nearest_source
+        distances, best = self._solver.vertex_distances(sources, max_distance=limit)
         if target_indices is None:
             return distances, best
         targets = np.asarray(target_indices).reshape(-1)

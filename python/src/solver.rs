@@ -4,8 +4,10 @@
 use crate::field::{AnyField, GeodesicField};
 use crate::input::{self, rows_of_three, value_error};
 use exact_geodesics::matrix::{distance_matrix, MatrixOptions, MatrixRow};
-use exact_geodesics::scalar::{Adaptive, Backend, Real};
-use exact_geodesics::{SurfacePoint, TriMesh, VertexId};
+use exact_geodesics::scalar::{Adaptive, Backend, Real, Scalar};
+use exact_geodesics::{
+    propagate_vertices, PointError, PropagateOptions, SurfacePoint, TriMesh, VertexId,
+};
 use numpy::ndarray::{Array2, ArrayView1};
 use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::prelude::*;
@@ -80,6 +82,46 @@ impl GeodesicSolver {
             .detach(move || AnyField::propagate(&mesh, backend, &sources, &options))
             .map_err(value_error)?;
         Ok(GeodesicField::new(field, backend, self.precision_cap))
+    }
+
+    /// The geodesic distance of every vertex to the nearest of ``sources`` and that source:
+    /// ``(distances, nearest_source)``, a float64 array (``inf`` where unreachable) and an int64
+    /// array of indices into ``sources`` (``-1`` where unreachable), in the order of the
+    /// vertices. What ``propagate(sources, max_distance).distances`` and ``.nearest_source``
+    /// give, without the field: the wedges of an edge are given up as soon as no later one can
+    /// change a vertex (the memory of a run is that of its front), and the directions of a
+    /// single source vertex are split between two threads when ``threads`` (all cores if
+    /// ``None``) is two or more (backends ``"f64"`` and ``"adaptive"``; the distances are then
+    /// one thread's up to the last bits where geodesics of the two halves tie). The GIL is
+    /// released while the wedges propagate. Raises ``ValueError`` as ``propagate`` does, or for
+    /// ``threads`` below 1.
+    #[pyo3(signature = (sources, max_distance = None, threads = None))]
+    fn vertex_distances<'py>(
+        &self,
+        py: Python<'py>,
+        sources: &Bound<'py, PyAny>,
+        max_distance: Option<f64>,
+        threads: Option<usize>,
+    ) -> PyResult<VertexColumns<'py>> {
+        let sources = input::surface_points(&self.mesh, sources)?;
+        let threads = match threads {
+            Some(0) => return Err(value_error("threads must be at least 1")),
+            Some(n) => n,
+            None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+        };
+        let options = input::options(max_distance, self.precision_cap)?.with_threads(threads);
+        let mesh = &*self.mesh;
+        let (distances, nearest) = py
+            .detach(|| match self.backend {
+                Backend::F64 => vertex_columns::<f64>(mesh, &sources, &options),
+                Backend::Adaptive => vertex_columns::<Adaptive>(mesh, &sources, &options),
+                Backend::Exact => vertex_columns::<Real>(mesh, &sources, &options),
+            })
+            .map_err(value_error)?;
+        Ok((
+            PyArray1::from_vec(py, distances),
+            PyArray1::from_vec(py, nearest),
+        ))
     }
 
     /// The distances from each source alone (one propagation per source, stopped once every
@@ -216,6 +258,26 @@ impl GeodesicSolver {
             self.backend.name()
         )
     }
+}
+
+/// Every vertex's distance and the index of its nearest source, as NumPy arrays.
+type VertexColumns<'py> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<i64>>);
+
+/// The distance of every vertex from `sources` and the index of its nearest source (`-1`
+/// where unreachable), by [`propagate_vertices`].
+fn vertex_columns<S: Scalar>(
+    mesh: &TriMesh,
+    sources: &[SurfacePoint],
+    options: &PropagateOptions,
+) -> Result<(Vec<f64>, Vec<i64>), PointError> {
+    let field = propagate_vertices::<S>(mesh, sources, options)?;
+    Ok((0..mesh.vertex_count() as u32)
+        .map(VertexId)
+        .map(|v| {
+            let nearest = field.nearest_source(v).map_or(-1, |k| i64::from(k.0));
+            (field.vertex_distance(v), nearest)
+        })
+        .unzip())
 }
 
 impl GeodesicSolver {

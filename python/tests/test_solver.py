@@ -336,3 +336,47 @@ def test_exact_path_crosses_the_cube_edge_at_one_half():
     assert len(crossings) == 1 and decimal.Decimal(crossings[0]) == decimal.Decimal("0.5")
     decimal.getcontext().prec = 50
     assert abs(decimal.Decimal(distance) - decimal.Decimal(5).sqrt()) <= decimal.Decimal("1e-29")
+
+
+def test_vertex_distances_are_the_fields_without_it(icosphere):
+    vertices, triangles = icosphere
+    solver = eg.GeodesicSolver(vertices, triangles)
+    # Several sources: one engine, so bit for bit the field's values.
+    field = solver.propagate([3, 17], max_distance=1.5)
+    distances, nearest = solver.vertex_distances([3, 17], max_distance=1.5)
+    np.testing.assert_array_equal(distances, field.distances)
+    np.testing.assert_array_equal(nearest, field.nearest_source)
+    assert distances.dtype == np.float64 and nearest.dtype == np.int64
+
+
+@pytest.mark.parametrize("backend", ["f64", "adaptive"])
+def test_vertex_distances_of_one_source_on_two_threads_are_one_threads(backend):
+    vertices, triangles = eg.generate_mesh("icosphere:4")
+    solver = eg.GeodesicSolver(vertices, triangles, backend=backend)
+    one, nearest_one = solver.vertex_distances(5, threads=1)
+    two, nearest_two = solver.vertex_distances(5, threads=2)
+    np.testing.assert_array_equal(one, solver.propagate(5).distances)
+    np.testing.assert_allclose(two, one, rtol=1e-12, atol=0)
+    assert np.all(nearest_one == 0) and np.all(nearest_two == 0)
+    # The icosphere's vertices lie on the unit sphere, around it: the nearest-point map onto
+    # a convex body is 1-Lipschitz, so no geodesic on the icosphere is longer than the great
+    # circle's arc between its ends, nor shorter than their chord.
+    np.testing.assert_allclose(np.linalg.norm(vertices, axis=1), 1.0, rtol=1e-12)
+    chord = np.linalg.norm(vertices - vertices[5], axis=1)
+    arc = np.arccos(np.clip(vertices @ vertices[5], -1.0, 1.0))
+    assert np.all(two >= chord * (1 - 1e-12)) and np.all(two <= arc * (1 + 1e-12) + 1e-15)
+
+
+def test_vertex_distances_on_the_cube_reach_the_opposite_corner_at_sqrt_5():
+    vertices, triangles = eg.generate_mesh("cube")
+    distances, _ = eg.GeodesicSolver(vertices, triangles).vertex_distances(0, threads=2)
+    assert distances[0] == 0.0
+    assert math.isclose(distances.max(), math.sqrt(5), rel_tol=1e-12)
+
+
+def test_vertex_distances_refuse_no_thread_and_a_negative_limit(icosphere):
+    solver = eg.GeodesicSolver(*icosphere)
+    with pytest.raises(ValueError, match="threads"):
+        solver.vertex_distances(0, threads=0)
+    with pytest.raises(ValueError, match="max_distance"):
+        solver.vertex_distances(0, max_distance=-1.0)
