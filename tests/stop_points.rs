@@ -201,3 +201,107 @@ proptest! {
         stopped_run_is_a_prefix_on::<Adaptive>(kind, seed).map_err(TestCaseError::fail)?;
     }
 }
+
+/// The path to a stop point traced on the stopped run against the full run's: every wedge it
+/// crosses lies nearer than the target, where the stopped run's wedges are final. The same
+/// source and distance (to a vertex bit for bit, elsewhere to rounding: the wedge that gives a
+/// point inside a face its distance may be another of equal value), and a path as long as the
+/// distance ([`GeodesicField::trace_back`] checks it); where the full run's trace fails
+/// (rounding sent it astray), the stopped run's may fail too. `identical`: the two paths also
+/// cross the same simplices at the same points, bit for bit (no ties between wedges). Whether
+/// the stopped run stopped before its end.
+fn stopped_path_is_the_full_runs<S: Scalar>(
+    mesh: &TriMesh,
+    source: u32,
+    target: &SurfacePoint,
+    identical: bool,
+) -> Result<bool, String> {
+    let full = run::<S>(mesh, source, &[]);
+    let stopped = run::<S>(mesh, source, std::slice::from_ref(target));
+    let early = stopped.stats().stopped_at_stop_points;
+    match (full.trace_back(target), stopped.trace_back(target)) {
+        (Ok(want), Ok(got)) => {
+            let same_distance = match target {
+                SurfacePoint::Vertex(_) => want.distance.to_bits() == got.distance.to_bits(),
+                _ => (want.distance - got.distance).abs() <= 1e-12 * want.distance.max(1.0),
+            };
+            let (start, end) = (got.simplices.first(), got.simplices.last());
+            let same = same_distance
+                && want.source == got.source
+                && start == want.simplices.first()
+                && end == want.simplices.last()
+                && (got.length() - got.distance).abs() <= 1e-9 * got.distance.max(1.0)
+                && (!identical || (got.simplices == want.simplices && got.points == want.points));
+            match same {
+                true => Ok(early),
+                false => Err(format!("to {target:?}: {got:?}, full run {want:?}")),
+            }
+        }
+        (Err(_), _) => Ok(early),
+        (Ok(want), Err(e)) => Err(format!("to {target:?}: {e}, full run {want:?}")),
+    }
+}
+
+#[test]
+fn paths_to_stop_points_are_the_full_runs() {
+    let mut rng = SplitMix64::new(21);
+    // Round a sphere, across flat ground and round the corners of a hole (pseudo-sources).
+    let meshes = [
+        shapes::icosphere(3),
+        shapes::uv_sphere(16, 9),
+        shapes::grid(12, 9, 3.0, 2.0),
+        shapes::random_convex_triangulation(21, 12, 40),
+        shapes::square_with_hole(6),
+        shapes::l_shape(6),
+    ];
+    for mesh in &meshes {
+        let n = mesh.vertex_count() as u32;
+        let mut targets: Vec<SurfacePoint> = (1..n).step_by(7).map(vertex).collect();
+        targets.extend((0..8).map(|_| common::random_face_point(mesh, &mut rng)));
+        let mut early = 0;
+        for target in &targets {
+            early +=
+                usize::from(stopped_path_is_the_full_runs::<f64>(mesh, 0, target, true).unwrap());
+            stopped_path_is_the_full_runs::<Adaptive>(mesh, 0, target, true).unwrap();
+        }
+        assert!(
+            2 * early > targets.len(),
+            "{early} of {} runs stopped early",
+            targets.len()
+        );
+    }
+    let cube = shapes::cube();
+    let early = (1..8)
+        .filter(|&v| stopped_path_is_the_full_runs::<Real>(&cube, 0, &vertex(v), true).unwrap())
+        .count();
+    assert!(early >= 3, "{early} of 7 runs stopped early");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 100,
+        rng_seed: RngSeed::Fixed(17),
+        max_shrink_iters: 0,
+        ..ProptestConfig::default()
+    })]
+
+    /// [`stopped_path_is_the_full_runs`] on degenerate meshes, to a vertex and to a point in a
+    /// face.
+    #[test]
+    fn paths_to_stop_points_are_the_full_runs_on_degenerate_meshes((kind, seed) in common::strategies::degenerate_case()) {
+        let case = degenerate_case(kind, seed, MeshSize::Full);
+        let mesh = &case.mesh;
+        let source = case.focus.first().map_or(0, |v| v.0);
+        let mut rng = SplitMix64::new(seed);
+        let targets = [
+            vertex((seed % mesh.vertex_count() as u64) as u32),
+            common::random_face_point(mesh, &mut rng),
+        ];
+        for target in &targets {
+            stopped_path_is_the_full_runs::<f64>(mesh, source, target, false)
+                .map_err(|e| TestCaseError::fail(format!("{kind:?} seed {seed}: {e}")))?;
+            stopped_path_is_the_full_runs::<Adaptive>(mesh, source, target, false)
+                .map_err(|e| TestCaseError::fail(format!("{kind:?} seed {seed}: {e}")))?;
+        }
+    }
+}

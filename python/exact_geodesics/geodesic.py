@@ -42,8 +42,10 @@ class PyGeodesicAlgorithmExact:
         Raises:
             ValueError: for an index out of range, or a target the source does not reach.
         """
-        field = self._solver.propagate([int(sourceIndex)])
-        path = field.path(int(targetIndex))
+        # The run stops once the target is final: the path's wedges are then final too.
+        target = int(targetIndex)
+        field = self._solver.propagate([int(sourceIndex)], stop_points=[target])
+        path = field.path(target)
         return path.distance, path.points
 
     def geodesicDistances(  # noqa: N802 (pygeodesic's name)

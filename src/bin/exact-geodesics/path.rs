@@ -34,8 +34,11 @@ pub struct PathArgs {
 }
 
 pub fn run(args: &PathArgs) -> Result<(), String> {
-    let job = args.common.job()?;
+    let mut job = args.common.job()?;
     let target = spec::parse_point(&job.mesh, &args.common.mesh, &args.target)?;
+    // The run stops once the target's distance is final: the wedges the path crosses are
+    // nearer, and final then too.
+    job.options.stop_points = vec![target];
     let (path, digits) = match args.digits.checked(job.backend)? {
         Some(digits) => {
             let field = job.field::<Real>()?;
