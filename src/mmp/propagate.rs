@@ -50,10 +50,10 @@ pub struct PropagateOptions {
     /// geometry-central and Kirsanov's MMP). Then the distances of the stop points, and of every
     /// vertex no farther than the farthest of them, are those of the full run: for vertices
     /// the very same values, since the run is the full run's first events, in the same order;
-    /// for points in faces or on edges the same up to the rounding of the query; the path
-    /// traced back from a stop point ([`GeodesicField::trace_back`]) is the full run's, whose
-    /// wedges, all nearer, are final (to a point in a face or on an edge, up to that rounding:
-    /// `tests/stop_points.rs`). Other
+    /// for points in faces or on edges the same up to the rounding of the query. A path traced
+    /// back from a stop point ([`GeodesicField::trace_back`]) crosses only nearer wedges, final
+    /// by then: from the same source, of the same length (`tests/stop_points.rs`: the very
+    /// path of the full run on regular meshes, and one as long on degenerate ones). Other
     /// vertices hold an upper bound (the length of some path, not necessarily the shortest) or
     /// `f64::INFINITY`, and [`Stats::stopped_at_stop_points`] says that the run stopped early.
     /// A point is final once the front of the propagation (the smallest distance waiting in
