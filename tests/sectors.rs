@@ -198,3 +198,48 @@ proptest! {
         }
     }
 }
+
+/// A maximum distance on two sectors: the vertices within it get the one-thread distances, the
+/// others none (`inf`), as on one thread, where each sector's engine stops at that distance.
+#[test]
+fn two_sectors_stop_at_the_maximum_distance() {
+    for (name, mesh) in meshes() {
+        let source = SurfacePoint::Vertex(VertexId(0));
+        let full = run::<f64>(&mesh, 0, 1);
+        let mut distances: Vec<f64> = (0..mesh.vertex_count() as u32)
+            .map(|v| full.vertex_distance(VertexId(v)))
+            .filter(|d| d.is_finite())
+            .collect();
+        distances.sort_by(f64::total_cmp);
+        // Half-way out, between two vertices' distances, so that no vertex lies at the limit.
+        let i = distances.len() / 2;
+        let limit = 0.5 * (distances[i] + distances[i + 1]);
+        let limited = |threads| {
+            let options = PropagateOptions::default()
+                .with_threads(threads)
+                .with_max_distance(limit);
+            propagate_vertices::<f64>(&mesh, &[source], &options).expect("a vertex")
+        };
+        let (one, two) = (limited(1), limited(2));
+        assert_eq!(two.stats().sectors, 2, "{name}");
+        for v in (0..mesh.vertex_count() as u32).map(VertexId) {
+            let (want, a, b) = (
+                full.vertex_distance(v),
+                one.vertex_distance(v),
+                two.vertex_distance(v),
+            );
+            if want <= limit {
+                assert_eq!(a.to_bits(), want.to_bits(), "{name}, {v:?}");
+                assert!(
+                    relatively_close(b, want, 1e-12),
+                    "{name}, {v:?}: {b} against {want}"
+                );
+            } else {
+                assert!(
+                    a.is_infinite() && b.is_infinite(),
+                    "{name}, {v:?}: {a} and {b} beyond {limit}"
+                );
+            }
+        }
+    }
+}
