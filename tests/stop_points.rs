@@ -200,6 +200,26 @@ proptest! {
         stopped_run_is_a_prefix_on::<f64>(kind, seed).map_err(TestCaseError::fail)?;
         stopped_run_is_a_prefix_on::<Adaptive>(kind, seed).map_err(TestCaseError::fail)?;
     }
+
+    /// [`stopped_path_is_the_full_runs`] on degenerate meshes, to a vertex and to a point in a
+    /// face.
+    #[test]
+    fn paths_to_stop_points_are_the_full_runs_on_degenerate_meshes((kind, seed) in common::strategies::degenerate_case()) {
+        let case = degenerate_case(kind, seed, MeshSize::Full);
+        let mesh = &case.mesh;
+        let source = case.focus.first().map_or(0, |v| v.0);
+        let mut rng = SplitMix64::new(seed);
+        let targets = [
+            vertex((seed % mesh.vertex_count() as u64) as u32),
+            common::random_face_point(mesh, &mut rng),
+        ];
+        for target in &targets {
+            stopped_path_is_the_full_runs::<f64>(mesh, source, target, false)
+                .map_err(|e| TestCaseError::fail(format!("{kind:?} seed {seed}: {e}")))?;
+            stopped_path_is_the_full_runs::<Adaptive>(mesh, source, target, false)
+                .map_err(|e| TestCaseError::fail(format!("{kind:?} seed {seed}: {e}")))?;
+        }
+    }
 }
 
 /// The path to a stop point traced on the stopped run against the full run's: every wedge it
@@ -275,33 +295,4 @@ fn paths_to_stop_points_are_the_full_runs() {
         .filter(|&v| stopped_path_is_the_full_runs::<Real>(&cube, 0, &vertex(v), true).unwrap())
         .count();
     assert!(early >= 3, "{early} of 7 runs stopped early");
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: 100,
-        rng_seed: RngSeed::Fixed(17),
-        max_shrink_iters: 0,
-        ..ProptestConfig::default()
-    })]
-
-    /// [`stopped_path_is_the_full_runs`] on degenerate meshes, to a vertex and to a point in a
-    /// face.
-    #[test]
-    fn paths_to_stop_points_are_the_full_runs_on_degenerate_meshes((kind, seed) in common::strategies::degenerate_case()) {
-        let case = degenerate_case(kind, seed, MeshSize::Full);
-        let mesh = &case.mesh;
-        let source = case.focus.first().map_or(0, |v| v.0);
-        let mut rng = SplitMix64::new(seed);
-        let targets = [
-            vertex((seed % mesh.vertex_count() as u64) as u32),
-            common::random_face_point(mesh, &mut rng),
-        ];
-        for target in &targets {
-            stopped_path_is_the_full_runs::<f64>(mesh, source, target, false)
-                .map_err(|e| TestCaseError::fail(format!("{kind:?} seed {seed}: {e}")))?;
-            stopped_path_is_the_full_runs::<Adaptive>(mesh, source, target, false)
-                .map_err(|e| TestCaseError::fail(format!("{kind:?} seed {seed}: {e}")))?;
-        }
-    }
 }
