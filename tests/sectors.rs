@@ -212,7 +212,9 @@ fn two_sectors_stop_at_the_maximum_distance() {
             .collect();
         distances.sort_by(f64::total_cmp);
         // Half-way out, between two vertices' distances, so that no vertex lies at the limit.
-        let i = distances.len() / 2;
+        let i = (distances.len() / 2..distances.len() - 1)
+            .find(|&i| distances[i] < distances[i + 1])
+            .expect("two distances apart");
         let limit = 0.5 * (distances[i] + distances[i + 1]);
         let limited = |threads| {
             let options = PropagateOptions::default()
