@@ -4,11 +4,11 @@
 //! (`bounds.rs`) to give up the wedges that the other sector's paths beat, so that each
 //! covers about its own part of the surface. How evenly the work divides rests on a proxy:
 //! the directions in which the vertices lie, by discrete geodesic polar coordinates
-//! ([`directions`]), halved ([`balanced_sides`]). From six vertices of stanford_bunny (v0, v5000,
-//! ..., v25000, two runs each) the busier engine propagated 54 % to 67 % (mean 60 %) as many
-//! wedges as a one-thread run, both together 113 % on average: the engine that runs ahead
-//! takes on the other's ground before that one's paths there are published, so both stay busy
-//! to the end whatever the balance; on icosphere5 each propagates 50.4 %.
+//! ([`directions`]), halved so that the two hold as many vertices within every distance as can
+//! be ([`balanced_sides`]): the engine that runs ahead takes on the other's ground before that
+//! one's paths there are published, so both stay busy to the end whatever the balance. From
+//! v0 of stanford_bunny the busier engine propagates 51-55 % as many wedges as a one-thread run
+//! (three runs; 55-60 % with the sides placed only by the vertices' count), on icosphere5 50.4 %.
 
 use super::fan::{fan, open_fan, Fan};
 use crate::mesh::{FaceId, TriMesh, VertexId};
@@ -70,13 +70,20 @@ pub(crate) fn split(mesh: &TriMesh, v: VertexId) -> Option<[Sector; 2]> {
         return None;
     }
     let cells = n * CELLS_PER_FACE;
-    let mut vertices = vec![0.0; cells];
-    for x in directions(mesh, v, &fan).into_iter().flatten() {
-        vertices[((x * CELLS_PER_FACE as f64) as usize).min(cells - 1)] += 1.0;
+    let found: Vec<(f64, f64)> = directions(mesh, v, &fan).into_iter().flatten().collect();
+    let farthest = found.iter().map(|&(_, d)| d).fold(0.0, f64::max);
+    let mut rings = vec![[0.0; RINGS]; cells];
+    for (x, d) in found {
+        let cell = ((x * CELLS_PER_FACE as f64) as usize).min(cells - 1);
+        let ring = match farthest > 0.0 {
+            true => ((d / farthest * RINGS as f64) as usize).min(RINGS - 1),
+            false => 0,
+        };
+        rings[cell][ring] += 1.0;
     }
     let n_f = n as f64;
     let spans = if closed {
-        let (lo, hi) = balanced_sides(&vertices)?;
+        let (lo, hi) = balanced_sides(&rings)?;
         // An arc round the fan's circle, in spans within `[0, n]`.
         let arc = |from: f64, to: f64| {
             let from = from.rem_euclid(n_f);
@@ -89,6 +96,7 @@ pub(crate) fn split(mesh: &TriMesh, v: VertexId) -> Option<[Sector; 2]> {
         };
         [arc(lo, hi), arc(hi, lo + n_f)]
     } else {
+        let vertices: Vec<f64> = rings.iter().map(|r| r.iter().sum()).collect();
         let x = halving_cut(&vertices).filter(|&x| x > 0.0 && x < n_f)?;
         [vec![[0.0, x]], vec![[x, n_f]]]
     };
@@ -143,44 +151,77 @@ fn halving_cut(vertices: &[f64]) -> Option<f64> {
 /// Cells of the fan per face in which [`balanced_sides`] places the sectors' sides.
 const CELLS_PER_FACE: usize = 16;
 
+/// Rings of estimated distance from the source (up to the farthest vertex's) in which
+/// [`balanced_sides`] weighs the two sectors against each other.
+const RINGS: usize = 32;
+
 /// The sides of the first sector as positions round a fan (face `i` spans `[i, i + 1]`, from
 /// neighbour `i`), given how many vertices' directions lie in each of its cells
-/// ([`CELLS_PER_FACE`] per face). The sides halve the vertices, each placed where as few
-/// directions lie as can be (on which side of a side a vertex's geodesic leaves is the
-/// proxy's guess), and else nearest a face's middle.
-fn balanced_sides(vertices: &[f64]) -> Option<(f64, f64)> {
-    let cells = vertices.len();
+/// ([`CELLS_PER_FACE`] per face), ring by ring of distance ([`RINGS`]). The sides halve the
+/// vertices; of all such halvings, the one whose sectors differ least in the vertices they hold
+/// within any distance, and then the one with its sides nearest faces' middles. Each engine
+/// takes its events in the order of their distances and gives up only what the other's
+/// published paths beat: an engine whose ground lies nearer runs ahead into the other's
+/// before those paths are there. Against halving at the cells where the fewest directions lie
+/// (the sides' guessed vertices fewest), the busier engine propagated 8 % fewer wedges from
+/// twelve vertices of stanford_bunny, both together 110 % instead of 115 % of one thread's,
+/// and 5 % fewer from eleven of rocker_arm; on icosphere5 as many (each half already).
+fn balanced_sides(rings: &[[f64; RINGS]]) -> Option<(f64, f64)> {
+    let cells = rings.len();
     let n = (cells / CELLS_PER_FACE) as f64;
     let position = |c: f64| c / CELLS_PER_FACE as f64;
-    let weight = |c: usize| vertices[c % cells];
-    let density = |x: f64| weight((x * CELLS_PER_FACE as f64) as usize);
-    let half = vertices.iter().sum::<f64>() / 2.0;
-    let largest = vertices.iter().copied().fold(0.0, f64::max);
-    let off_middle = |x: f64| (x.fract() - 0.5).abs();
-    let cost = |lo: f64, hi: f64| {
-        density(lo) + density(hi) + 1e-3 * largest * (off_middle(lo) + off_middle(hi))
+    let weights: Vec<f64> = rings.iter().map(|r| r.iter().sum()).collect();
+    let weight = |c: usize| weights[c % cells];
+    let half = weights.iter().sum::<f64>() / 2.0;
+    let mut all = [0.0; RINGS];
+    for r in rings {
+        add(&mut all, r, 1.0);
+    }
+    // The largest difference between the sector's vertices and the rest within a distance.
+    let imbalance = |inside: &[f64; RINGS]| {
+        let (mut mine, mut theirs, mut worst) = (0.0, 0.0, 0.0f64);
+        for (a, b) in inside.iter().zip(&all) {
+            mine += a;
+            theirs += b - a;
+            worst = worst.max((mine - theirs).abs());
+        }
+        worst
     };
-    let (mut end, mut inside) = (0, 0.0);
+    let off_middle = |x: f64| (x.fract() - 0.5).abs();
+    let tie = 1e-9 * half;
+    let (mut end, mut inside, mut ring) = (0, 0.0, [0.0; RINGS]);
     let mut best: Option<(f64, f64, f64)> = None;
     for start in 0..cells {
         if end <= start {
-            (end, inside) = (start, 0.0);
+            (end, inside, ring) = (start, 0.0, [0.0; RINGS]);
         }
         while end < start + cells && inside + weight(end) < half {
             inside += weight(end);
+            add(&mut ring, &rings[end % cells], 1.0);
             end += 1;
         }
         let w = weight(end);
-        let lo = position(start as f64);
-        let hi = position(end as f64 + if w > 0.0 { (half - inside) / w } else { 0.0 });
-        if hi > lo && hi < lo + n && best.is_none_or(|b| cost(lo, hi) < b.0) {
-            best = Some((cost(lo, hi), lo, hi));
+        let part = if w > 0.0 { (half - inside) / w } else { 0.0 };
+        let (lo, hi) = (position(start as f64), position(end as f64 + part));
+        let mut sector = ring;
+        add(&mut sector, &rings[end % cells], part);
+        let cost = imbalance(&sector) + tie * (off_middle(lo) + off_middle(hi));
+        if hi > lo && hi < lo + n && best.is_none_or(|b| cost < b.0) {
+            best = Some((cost, lo, hi));
         }
         if end > start {
             inside -= weight(start);
+            add(&mut ring, &rings[start % cells], -1.0);
         }
     }
     best.map(|(_, lo, hi)| (lo, hi))
+}
+
+/// `into += by * what`, ring by ring.
+fn add(into: &mut [f64; RINGS], what: &[f64; RINGS], by: f64) {
+    for (a, b) in into.iter_mut().zip(what) {
+        *a += by * b;
+    }
 }
 
 /// Each vertex's direction from `v` as a position round its fan: `i + t` where it crosses
@@ -192,11 +233,11 @@ fn balanced_sides(vertices: &[f64]) -> Option<(f64, f64)> {
 /// metric's and could lower it again, but every face is then crossed once from each corner
 /// instead of from every corner that the front lowers (a third fewer instructions, on
 /// rocker_arm 41M -> 26M, where the sectors were the wait before the engines started).
-/// `None` for the vertices the front does not reach.
+/// Each with the distance the front gave it; `None` for the vertices the front does not reach.
 ///
 /// [MR12]: E. L. Melvær, M. Reimers, Geodesic polar coordinates on polygonal meshes, Computer
 /// Graphics Forum 31(8), 2012.
-fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<f64>> {
+fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<(f64, f64)>> {
     let count = mesh.vertex_count();
     let total: f64 = fan.faces.iter().map(|f| f.2).sum();
     // Angles round a closed fan start again at 0 after the angle sum.
@@ -264,7 +305,11 @@ fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<f64>> {
     };
     angle
         .iter()
-        .map(|&a| if a.is_nan() { None } else { position(a) })
+        .zip(&distance)
+        .map(|(&a, &d)| match a.is_nan() {
+            true => None,
+            false => position(a).map(|x| (x, d)),
+        })
         .collect()
 }
 
@@ -337,7 +382,7 @@ mod tests {
         let cross = |a: glam::DVec3, b: glam::DVec3| a.x * b.y - a.y * b.x;
         let mut checked = 0;
         for (u, position) in directions(&mesh, v, &fan).into_iter().enumerate() {
-            let Some(x) = position else { continue };
+            let Some((x, _)) = position else { continue };
             let p = at(VertexId(u as u32));
             // The ray from `v` through `p` meets `a + t (b - a)` at `t`, in front of `v`.
             let expected: Vec<f64> = (0..n)
@@ -361,29 +406,40 @@ mod tests {
         assert_eq!(checked, 120);
     }
 
-    /// Evenly spread directions are halved at faces' middles; a crowd of directions is kept
-    /// off the sides.
+    /// Evenly spread directions are halved at faces' middles. Where the near vertices lie in
+    /// one half of the fan and the far ones in the other, the sides cut across both, so that
+    /// each sector holds as many of each.
     #[test]
-    fn sides_halve_the_directions_away_from_crowds() {
-        let even = vec![1.0; 6 * CELLS_PER_FACE];
+    fn sides_halve_the_directions_and_each_distance() {
+        let faces = 6;
+        let even = vec![[1.0; RINGS]; faces * CELLS_PER_FACE];
         let (lo, hi) = balanced_sides(&even).expect("sides");
         assert!((hi - lo - 3.0).abs() < 1e-12, "{lo} {hi}");
         assert!((lo.fract() - 0.5).abs() < 1e-12, "{lo}");
-        let mut crowded = even.clone();
-        let crowd = 2 * CELLS_PER_FACE + 3;
-        crowded[crowd] = 50.0;
-        let (lo, hi) = balanced_sides(&crowded).expect("sides");
-        let half: f64 = crowded.iter().sum::<f64>() / 2.0;
-        let cell = |x: f64| (x * CELLS_PER_FACE as f64) as usize % crowded.len();
-        assert!(cell(lo) != crowd && cell(hi) != crowd, "{lo} {hi}");
-        let inside: f64 = (0..crowded.len())
-            .filter(|&c| {
-                let x = (c as f64 + 0.5) / CELLS_PER_FACE as f64;
-                (lo <= x && x <= hi) || (lo <= x + 6.0 && x + 6.0 <= hi)
-            })
-            .map(|c| crowded[c])
-            .sum();
-        assert!((inside - half).abs() <= 1.0, "{inside} of {half}");
+        // Faces 0 to 2: a vertex per cell in the nearest ring; faces 3 to 5: in the farthest.
+        let mut apart = vec![[0.0; RINGS]; faces * CELLS_PER_FACE];
+        for (c, cell) in apart.iter_mut().enumerate() {
+            cell[if c < 3 * CELLS_PER_FACE { 0 } else { RINGS - 1 }] = 1.0;
+        }
+        let (lo, hi) = balanced_sides(&apart).expect("sides");
+        assert!((hi - lo - 3.0).abs() < 1e-12, "{lo} {hi}");
+        // Cell middles within the first sector, counted by ring.
+        let within = |ring: usize| {
+            (0..apart.len())
+                .filter(|&c| {
+                    let x = (c as f64 + 0.5) / CELLS_PER_FACE as f64;
+                    (lo <= x && x <= hi) || (lo <= x + 6.0 && x + 6.0 <= hi)
+                })
+                .map(|c| apart[c][ring])
+                .sum::<f64>()
+        };
+        let half_ring = 1.5 * CELLS_PER_FACE as f64;
+        assert!(
+            (within(0) - half_ring).abs() <= 1.0,
+            "{lo} {hi}: {}",
+            within(0)
+        );
+        assert!((within(RINGS - 1) - half_ring).abs() <= 1.0, "{lo} {hi}");
     }
 
     /// The two sectors' directions cover every face of the fan once, and one or both (at a
