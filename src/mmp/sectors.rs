@@ -167,9 +167,9 @@ const RINGS: usize = 32;
 /// runs each) the busier engine propagated 5 % fewer wedges (913k -> 866k on average), both
 /// together 4 % fewer, in 6 % less time (whole process, median 0.562 -> 0.528 s); from three
 /// of the bunny subdivided once (278k faces) 8 % fewer (5.30 -> 4.87 s); rocker_arm 2 %
-/// fewer in the same time, icosphere5 (each half already) and fandisk as many. On models
-/// below 15,000 faces, which `distance` runs on one thread, the busier engine of
-/// cad_featuretype propagated 14 % more.
+/// fewer in the same time, icosphere5 as many (each half already), fandisk on two threads 5 %
+/// fewer (four vertices). On models below 15,000 faces, which `distance` runs on one thread,
+/// the busier engine of cad_featuretype propagated 14 % more.
 fn balanced_sides(rings: &[[f64; RINGS]]) -> Option<(f64, f64)> {
     let cells = rings.len();
     let n = (cells / CELLS_PER_FACE) as f64;
