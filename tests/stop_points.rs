@@ -228,8 +228,8 @@ proptest! {
 /// point inside a face its distance may be another of equal value), and a path as long as the
 /// distance ([`GeodesicField::trace_back`] checks it); where the full run's trace fails
 /// (rounding sent it astray), the stopped run's may fail too. `identical`: the two paths also
-/// cross the same simplices at the same points, bit for bit (no ties between wedges). Whether
-/// the stopped run stopped before its end.
+/// cross the same simplices at the same points, bit for bit (no ties between wedges), and the
+/// full run's trace must succeed. Whether the stopped run stopped before its end.
 fn stopped_path_is_the_full_runs<S: Scalar>(
     mesh: &TriMesh,
     source: u32,
@@ -257,6 +257,7 @@ fn stopped_path_is_the_full_runs<S: Scalar>(
                 false => Err(format!("to {target:?}: {got:?}, full run {want:?}")),
             }
         }
+        (Err(e), _) if identical => Err(format!("to {target:?}: the full run's trace: {e}")),
         (Err(_), _) => Ok(early),
         (Ok(want), Err(e)) => Err(format!("to {target:?}: {e}, full run {want:?}")),
     }

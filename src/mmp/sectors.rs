@@ -96,8 +96,7 @@ pub(crate) fn split(mesh: &TriMesh, v: VertexId) -> Option<[Sector; 2]> {
         };
         [arc(lo, hi), arc(hi, lo + n_f)]
     } else {
-        let vertices: Vec<f64> = rings.iter().map(|r| r.iter().sum()).collect();
-        let x = halving_cut(&vertices).filter(|&x| x > 0.0 && x < n_f)?;
+        let x = halving_cut(&counts(&rings)).filter(|&x| x > 0.0 && x < n_f)?;
         [vec![[0.0, x]], vec![[x, n_f]]]
     };
     let [first, second] = spans;
@@ -174,7 +173,7 @@ fn balanced_sides(rings: &[[f64; RINGS]]) -> Option<(f64, f64)> {
     let cells = rings.len();
     let n = (cells / CELLS_PER_FACE) as f64;
     let position = |c: f64| c / CELLS_PER_FACE as f64;
-    let weights: Vec<f64> = rings.iter().map(|r| r.iter().sum()).collect();
+    let weights = counts(rings);
     let weight = |c: usize| weights[c % cells];
     let half = weights.iter().sum::<f64>() / 2.0;
     let mut all = [0.0; RINGS];
@@ -219,6 +218,11 @@ fn balanced_sides(rings: &[[f64; RINGS]]) -> Option<(f64, f64)> {
         }
     }
     best.map(|(_, lo, hi)| (lo, hi))
+}
+
+/// The vertices of each cell, all rings together.
+fn counts(rings: &[[f64; RINGS]]) -> Vec<f64> {
+    rings.iter().map(|r| r.iter().sum()).collect()
 }
 
 /// `into += by * what`, ring by ring.
