@@ -33,11 +33,13 @@ pub struct DistanceArgs {
     threads: Option<u32>,
 }
 
-/// Faces from which `distance` uses every core by default: a second engine adds about 2 MiB
-/// (its tables and the wedges of its front), which below this outweighs its help (from v0,
-/// peak RSS, one thread against two: fandisk, 13k faces, 10.6 against 12.4 MiB, where
-/// Kirsanov's MMP takes 23.8; rocker_arm, 20k faces, 12.9 against 14.8 MiB and 0.21 against
-/// 0.16 s).
+/// Faces from which `distance` uses every core by default: a second engine adds 0.6-1.9 MiB
+/// (its tables, its thread, the wedges it spills into the other sector), which below this
+/// outweighs its help. On fandisk (13k faces; v0, v100, v2000, v4000, v6000, medians of 5)
+/// two threads take 0.07-0.09 s against 0.08-0.11 s, but peak at 11.1-11.6 MiB against
+/// 9.9-10.3 MiB: 0.48-0.54 of Kirsanov's MMP (21.2-23.8 MiB), half or more from three of the
+/// five sources, where issue 13 allows at most half; rocker_arm (20k faces) 14.0 against
+/// 12.1 MiB, 0.44 of Kirsanov's, and 0.11 against 0.16 s.
 const THREADED_FACES: usize = 15_000;
 
 /// A vertex's distance as printed: an `f64`, or certified digits of the exact value.
