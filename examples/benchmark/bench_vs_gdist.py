@@ -2,7 +2,8 @@
 """Benchmark the exact-geodesics CLI against gdist (Kirsanov's exact MMP).
 
 For every model (an OBJ file in ../shared/models, relative to the repository,
-and generated regular meshes written as OBJ files into OUT/generated) and one
+and generated meshes written as OBJ files into OUT/generated: regular ones, and
+shared models Loop-subdivided, ``loop:rocker_arm:1``) and one
 source vertex, this runs fresh processes, taking turns --repeats times:
 
 1. gdist_worker.py in the venv made by setup_venv.sh: one
@@ -50,6 +51,7 @@ from datetime import datetime, timezone
 from pathlib import Path
 
 from common import RSS_METHOD, RunError, run_measured
+from loop_subdivision import loop_subdivide, read_obj
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
@@ -398,24 +400,41 @@ def icosphere_mesh(level):
     return vertices, triangles
 
 
-def write_generated(kind, size, path):
-    """Write ``icosphere_mesh(size)`` or ``grid_mesh(size)`` to ``path``."""
-    write_obj(path, *(icosphere_mesh(size) if kind == "icosphere" else grid_mesh(size)))
+def write_generated(kind, size, path, model=None):
+    """Write ``icosphere_mesh(size)``, ``grid_mesh(size)`` or, for ``loop``, the OBJ file
+    ``model`` Loop-subdivided ``size`` times, to ``path``."""
+    if kind == "loop":
+        mesh = read_obj(model)
+        for _ in range(size):
+            mesh = loop_subdivide(*mesh)
+    else:
+        mesh = icosphere_mesh(size) if kind == "icosphere" else grid_mesh(size)
+    write_obj(path, *mesh)
 
 
-def generated_models(names, out_dir):
-    """Write each generated mesh (``icosphere:L`` or ``grid:N``) as OBJ; map names to paths."""
+def generated_models(names, out_dir, models_dir):
+    """Write each generated mesh (``icosphere:L``, ``grid:N``, or ``loop:MODEL:N``: the model
+    of ``models_dir`` Loop-subdivided N times) as OBJ; map names to paths."""
     out_dir.mkdir(parents=True, exist_ok=True)
     models = {}
     for name in names:
         kind, _, size = name.partition(":")
-        if kind not in ("icosphere", "grid") or not size.isdigit():
-            raise SetupError(f"unknown generated mesh {name!r} (icosphere:L or grid:N)")
-        stem = f"{kind}{size}"
+        model = None
+        if kind == "loop":
+            stem, _, size = size.rpartition(":")
+            if not models_dir.is_dir():
+                log(f"models folder {models_dir} not found: {name} skipped")
+                continue
+            model = models_dir / f"{stem}.obj"
+            if not model.is_file():
+                raise SetupError(f"no model {stem!r} in {models_dir} to subdivide ({name!r})")
+        if kind not in ("icosphere", "grid", "loop") or not size.isdigit():
+            raise SetupError(f"unknown generated mesh {name!r} (icosphere:L, grid:N or loop:MODEL:N)")
+        stem = f"{model.stem}_loop{size}" if model else f"{kind}{size}"
         path = out_dir / f"{stem}.obj"
         if not path.exists():
             log(f"writing {path}")
-            in_fresh_process(write_generated, kind, int(size), path)
+            in_fresh_process(write_generated, kind, int(size), path, model)
         models[stem] = path
     return models
 
@@ -550,7 +569,9 @@ def parse_args():
                         help="runs of gdist and of ours, taking turns; medians are reported")
     parser.add_argument("--generated", type=lambda s: [m for m in s.split(",") if m],
                         default=["icosphere:6", "icosphere:7", "grid:300", "grid:1000"],
-                        help="generated meshes, icosphere:L or grid:N, written to OUT/generated ('' for none)")
+                        help="generated meshes, written to OUT/generated ('' for none): icosphere:L, grid:N, or "
+                             "loop:MODEL:N, a model of --models-dir Loop-subdivided N times (4^N times the faces, "
+                             "the same shape and genus; v:S stays the same point)")
     parser.add_argument("--kirsanov-driver", type=Path, default=None,
                         help="the C++ driver built by build_kirsanov.sh, also timed in every turn "
                              f"(default: {DEFAULT_KIRSANOV.relative_to(REPO)} where it exists)")
@@ -570,7 +591,7 @@ def main():
         return 0
     try:
         models = select_models(args.models_dir, args.models) if args.models_dir.is_dir() else {}
-        models.update(generated_models(args.generated, args.out / "generated"))
+        models.update(generated_models(args.generated, args.out / "generated", args.models_dir))
         ensure_venv(args.venv_python)
         ensure_binary(args.binary, args.build)
     except SetupError as exc:
