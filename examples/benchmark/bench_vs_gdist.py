@@ -50,8 +50,8 @@ import sys
 from datetime import datetime, timezone
 from pathlib import Path
 
-from common import RSS_METHOD, RunError, run_measured
-from loop_subdivision import loop_subdivide, read_obj
+from common import RSS_METHOD, RunError, read_obj, run_measured
+from loop_subdivision import loop_subdivide
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]

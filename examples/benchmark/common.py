@@ -25,6 +25,30 @@ PAPER_TABLE1 = [
 ]
 
 
+def read_obj(path):
+    """The vertices ``(x, y, z)`` and 0-based triangles of an OBJ file, in file order.
+
+    Accepts ``v x y z [w]`` and ``f a b c`` lines with 1-based or negative
+    (relative) indices, in the ``a``, ``a/t``, ``a//n`` and ``a/t/n`` forms;
+    every other record and comments are ignored. Faces that are not triangles
+    are an error (``ValueError`` naming the file and line)."""
+    vertices = []
+    triangles = []
+    with open(path, encoding="utf-8") as lines:
+        for lineno, line in enumerate(lines, start=1):
+            fields = line.split("#", 1)[0].split()
+            if not fields:
+                continue
+            if fields[0] == "v":
+                vertices.append(tuple(float(x) for x in fields[1:4]))
+            elif fields[0] == "f":
+                corners = [int(token.split("/", 1)[0]) for token in fields[1:]]
+                if len(corners) != 3:
+                    raise ValueError(f"{path}:{lineno}: face with {len(corners)} vertices, expected 3")
+                triangles.append(tuple(c - 1 if c > 0 else len(vertices) + c for c in corners))
+    return vertices, triangles
+
+
 def write_rows(out, name, rows):
     """Writes `rows` (a list of dicts) to OUT/NAME.json and OUT/NAME.csv (the union of their
     keys, in order of first appearance)."""

@@ -35,32 +35,17 @@ from pathlib import Path
 import gdist
 import numpy as np
 
+from common import read_obj
+
 # gdist's GEODESIC_INF is 1e100; anything this large means "not reached".
 UNREACHED_THRESHOLD = 1e99
 
 
 def load_obj(path):
-    """Read the vertices and triangles of an OBJ file, keeping vertex order.
-
-    Accepts ``v x y z [w]`` and ``f a b c`` lines with 1-based or negative
-    (relative) indices, in the ``a``, ``a/t``, ``a//n`` and ``a/t/n`` forms;
-    every other record and comments are ignored. Faces that are not triangles
-    are an error. Returns ``(vertices float64 Nx3, triangles int32 Mx3)``.
-    """
-    vertices = []
-    triangles = []
-    with open(path, encoding="utf-8") as lines:
-        for lineno, line in enumerate(lines, start=1):
-            fields = line.split("#", 1)[0].split()
-            if not fields:
-                continue
-            if fields[0] == "v":
-                vertices.append([float(x) for x in fields[1:4]])
-            elif fields[0] == "f":
-                corners = [int(token.split("/", 1)[0]) for token in fields[1:]]
-                if len(corners) != 3:
-                    raise ValueError(f"{path}:{lineno}: face with {len(corners)} vertices, expected 3")
-                triangles.append([c - 1 if c > 0 else len(vertices) + c for c in corners])
+    """The vertices and triangles of an OBJ file (``common.read_obj``), as arrays
+    ``(vertices float64 Nx3, triangles int32 Mx3)``; a face index out of range
+    is an error."""
+    vertices, triangles = read_obj(path)
     vertices = np.asarray(vertices, dtype=np.float64).reshape(-1, 3)
     triangles = np.asarray(triangles, dtype=np.int32).reshape(-1, 3)
     if triangles.size and (triangles.min() < 0 or triangles.max() >= len(vertices)):

@@ -17,25 +17,6 @@ Needs only the standard library.
 """
 
 
-def read_obj(path):
-    """The vertices (x, y, z) and 0-based triangles of an OBJ file's ``v`` and ``f`` lines
-    (``f a/b/c`` reads the vertex indices; polygons of more corners are refused)."""
-    vertices, triangles = [], []
-    with open(path, encoding="utf-8") as lines:
-        for number, line in enumerate(lines, start=1):
-            words = line.split("#", 1)[0].split()
-            if not words:
-                continue
-            if words[0] == "v":
-                vertices.append(tuple(float(w) for w in words[1:4]))
-            elif words[0] == "f":
-                corners = [int(w.split("/", 1)[0]) for w in words[1:]]
-                if len(corners) != 3 or min(corners) < 1:
-                    raise ValueError(f"{path}:{number}: only triangles with positive indices are read")
-                triangles.append(tuple(c - 1 for c in corners))
-    return vertices, triangles
-
-
 def loop_subdivide(vertices, triangles):
     """One step of Loop's subdivision (see the module's docs): the new vertices and triangles."""
     third_corners = {}

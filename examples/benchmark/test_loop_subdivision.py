@@ -1,12 +1,13 @@
 """loop_subdivision: the rules checked against closed forms on a regular icosahedron and a flat
-square, and the OBJ reader."""
+square; common.read_obj, which reads the models it subdivides."""
 
 import math
 
 import pytest
 
 from bench_vs_gdist import grid_mesh, icosphere_mesh
-from loop_subdivision import loop_subdivide, read_obj
+from common import read_obj
+from loop_subdivision import loop_subdivide
 
 
 def norm(p):
@@ -53,7 +54,7 @@ def test_a_flat_square_stays_flat_and_its_boundary_edges_split_at_their_middles(
 
 def test_read_obj_reads_vertices_and_triangles_and_refuses_polygons(tmp_path):
     path = tmp_path / "mesh.obj"
-    path.write_text("# a comment\nv 0 0 0\nv 1 0 0  # trailing\nv 0 1 0\nvn 0 0 1\nf 1/1/1 2/2/1 3/3/1\n")
+    path.write_text("# a comment\nv 0 0 0\nv 1 0 0  # trailing\nv 0 1 0\nvn 0 0 1\nf 1/1/1 2/2/1 -1\n")
     assert read_obj(path) == ([(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)], [(0, 1, 2)])
     path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 4 3\n")
     with pytest.raises(ValueError, match="mesh.obj:5"):
