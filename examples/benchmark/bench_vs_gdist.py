@@ -568,7 +568,8 @@ def parse_args():
     parser.add_argument("--repeats", type=int, default=3,
                         help="runs of gdist and of ours, taking turns; medians are reported")
     parser.add_argument("--generated", type=lambda s: [m for m in s.split(",") if m],
-                        default=["icosphere:6", "icosphere:7", "grid:300", "grid:1000"],
+                        default=["icosphere:6", "icosphere:7", "grid:300", "grid:1000",
+                                 "loop:rocker_arm:1", "loop:stanford_bunny:1"],
                         help="generated meshes, written to OUT/generated ('' for none): icosphere:L, grid:N, or "
                              "loop:MODEL:N, a model of --models-dir Loop-subdivided N times (4^N times the faces, "
                              "the same shape and genus; v:S stays the same point)")
