@@ -572,7 +572,7 @@ def parse_args():
                                  "loop:rocker_arm:1", "loop:stanford_bunny:1"],
                         help="generated meshes, written to OUT/generated ('' for none): icosphere:L, grid:N, or "
                              "loop:MODEL:N, a model of --models-dir Loop-subdivided N times (4^N times the faces, "
-                             "the same shape and genus; v:S stays the same point)")
+                             "smoothed a little, the same genus; v:S stays the same point)")
     parser.add_argument("--kirsanov-driver", type=Path, default=None,
                         help="the C++ driver built by build_kirsanov.sh, also timed in every turn "
                              f"(default: {DEFAULT_KIRSANOV.relative_to(REPO)} where it exists)")

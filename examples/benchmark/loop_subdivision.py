@@ -1,6 +1,6 @@
 """Loop's subdivision of a triangle mesh [Loo87], for benchmarks on larger versions of the shared
-models: each step splits every triangle into four, so a model of 20k faces becomes one of 80k
-with the same shape and genus, as the larger models that the issue's hidden checks time are.
+models: each step splits every triangle into four, so a model of 20k faces becomes one of 80k,
+smoothed a little, of the same genus: larger models of real shapes, as issue 13 asks to time.
 
 Rules: a vertex inside the surface moves to ``(1 - n b) p + b (sum of its n neighbours)``,
 ``b = 3/16`` for ``n = 3`` and ``3 / (8 n)`` otherwise; an edge between two faces gets the
