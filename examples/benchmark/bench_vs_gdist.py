@@ -51,7 +51,7 @@ from datetime import datetime, timezone
 from pathlib import Path
 
 from common import RSS_METHOD, RunError, read_obj, run_measured
-from loop_subdivision import loop_subdivide
+from loop_subdivision import loop_subdivide, split_in_four
 
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parents[1]
@@ -392,11 +392,7 @@ def icosphere_mesh(level):
                 vertices.append(unit(tuple((p + q) / 2 for p, q in zip(vertices[a], vertices[b]))))
             return middle[key]
 
-        finer = []
-        for a, b, c in triangles:
-            ab, bc, ca = mid(a, b), mid(b, c), mid(c, a)
-            finer += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
-        triangles = finer
+        triangles = split_in_four(triangles, mid)
     return vertices, triangles
 
 

@@ -55,11 +55,14 @@ def loop_subdivide(vertices, triangles):
             terms = [(0.5, u), (0.5, v)]
         points.append(combination(terms))
 
-    def middle(a, b):
-        return edge_point[(min(a, b), max(a, b))]
+    return points, split_in_four(triangles, lambda a, b: edge_point[(min(a, b), max(a, b))])
 
+
+def split_in_four(triangles, middle):
+    """Each triangle as four, by the vertex ``middle(a, b)`` of each of its edges (the same for
+    both orders of its ends), with the orientation kept."""
     finer = []
     for a, b, c in triangles:
         ab, bc, ca = middle(a, b), middle(b, c), middle(c, a)
         finer += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
-    return points, finer
+    return finer
