@@ -196,6 +196,19 @@ pub(crate) enum Due<S: Scalar> {
     Now(Wedge<S>, Provenance<S>),
 }
 
+/// How far beyond the front, as a fraction of the front's distance, a wedge trimmed since it
+/// was queued may lie and still be propagated when its event comes up, rather than queued
+/// again at its new smallest distance. Its children still give no distance nearer than the
+/// front (they lie beyond the wedge's smallest distance), which is all that vertices being
+/// final, stop points and giving up edges rest on; what changes is the order of wedges within
+/// that fraction, as rounding changes it among keys that tie. Trimming an end of a wedge mostly
+/// raises its smallest distance by 1e-7 to 1e-4 of it: from v0 of icosphere5, 278k events
+/// came up before their wedges (478k propagated) and were queued again, each costing a pop
+/// and a push; with this slack 154 do, and the run takes 6.5 % fewer instructions (rocker_arm
+/// 43.8k and 3.9k, 1.5 %; stanford_bunny 221k and 14k, 1.7 %), the same wedges propagated
+/// within 0.01 % (fewer created).
+const EARLY: f64 = 1.0 / 4096.0;
+
 /// The place of the wedge numbered `serial` in `list`, looking from `place` on, then back from
 /// it: wedges inserted before it since it was queued there moved it to the right, and wedges
 /// join a list far more often than they leave it (on the bunny, 990k events found their wedge
@@ -251,11 +264,11 @@ impl<S: Scalar> WedgeLists<S> {
         }
     }
 
-    /// The wedge of a queue event popped at `key`, if it is due. A due wedge is marked as
-    /// propagated and joined to the propagated wedges beside it that it continues
-    /// ([`Entry::continued_by`]; `length`: its edge's length): their children and its own are
-    /// the children of the joined wedge, so the edge keeps one wedge where the shadow lines of
-    /// flat vertices would have cut many.
+    /// The wedge of a queue event popped at `key`, if it is due: its smallest distance is
+    /// within [`EARLY`] of `key`. A due wedge is marked as propagated and joined to the
+    /// propagated wedges beside it that it continues ([`Entry::continued_by`]; `length`: its
+    /// edge's length): their children and its own are the children of the joined wedge, so the
+    /// edge keeps one wedge where the shadow lines of flat vertices would have cut many.
     pub(crate) fn due(&mut self, at: WedgeRef, key: f64, length: &S, stats: &mut Stats) -> Due<S> {
         let list = &mut self.lists[at.edge.index()];
         let Some(mut i) = find_near(list, at.place as usize, at.serial) else {
@@ -266,7 +279,7 @@ impl<S: Scalar> WedgeLists<S> {
             return Due::Stale;
         }
         let now = entry.min_distance().to_f64();
-        if now > key {
+        if now > key + key * EARLY {
             return Due::Later(now);
         }
         let wedge = entry.wedge(at.edge);
@@ -797,6 +810,38 @@ mod tests {
         // A covered edge needs no known end: its farthest distance sqrt(0.5^2 + 1) < 1.12.
         assert!(!lists.close(EdgeId(1), 1.1, &1.0, || [None, None]));
         assert!(lists.close(EdgeId(1), 1.13, &1.0, || [None, None]));
+    }
+
+    /// A wedge trimmed after it was queued, so that its smallest distance rose, is due when
+    /// its event comes up if the rise is within [`EARLY`] of the key, else queued again at its
+    /// new smallest distance. The wedge from (0.5, 1) has its smallest distance 1 at its foot;
+    /// a wedge from (0.7, 0.3) that meets it at `c` (its sigma chosen so) takes the range
+    /// beyond `c`, leaving `[0, c]` with the smallest distance `sqrt((0.5 - c)^2 + 1)` at `c`.
+    #[test]
+    fn a_wedge_trimmed_by_less_than_the_slack_is_due_and_by_more_is_queued_again() {
+        let at = |c: f64| {
+            let mut lists = WedgeLists::<f64>::new(1, false, false);
+            let mut events = Events::default();
+            insert(&mut lists, wedge([0.0, 1.0], 0.5, 0.0), &mut events);
+            let lowest = ((0.5 - c).powi(2) + 1.0).sqrt();
+            let mut beyond = wedge([0.0, 1.0], 0.7, lowest - ((0.7 - c).powi(2) + 0.09).sqrt());
+            beyond.source_y = 0.3;
+            insert(&mut lists, beyond, &mut events);
+            (
+                lists.due(events.0[0], 1.0, &1.0, &mut Stats::default()),
+                lowest,
+            )
+        };
+        // A rise of 5e-5 of the key.
+        match at(0.49) {
+            (Due::Now(w, _), _) => assert!((w.b1 - 0.49).abs() < 1e-9, "{}", w.b1),
+            _ => panic!("the wedge trimmed to [0, 0.49] is due"),
+        }
+        // A rise of 1.2e-3.
+        match at(0.45) {
+            (Due::Later(key), lowest) => assert!((key - lowest).abs() < 1e-12, "{key}"),
+            _ => panic!("the wedge trimmed to [0, 0.45] waits"),
+        }
     }
 
     #[test]
