@@ -205,8 +205,8 @@ pub(crate) enum Due<S: Scalar> {
 /// raises its smallest distance by 1e-7 to 1e-4 of it: from v0 of icosphere5, 278k events
 /// came up before their wedges (478k propagated) and were queued again, each costing a pop
 /// and a push; with this slack 154 do, and the run takes 6.5 % fewer instructions (rocker_arm
-/// 43.8k and 3.9k, 1.5 %; stanford_bunny 221k and 14k, 1.7 %), the same wedges propagated
-/// within 0.01 % (fewer created).
+/// 43.8k requeues -> 3.9k, 1.5 %; stanford_bunny 221k -> 14k, 1.7 %), the same wedges
+/// propagated within 0.01 % (fewer created).
 const EARLY: f64 = 1.0 / 4096.0;
 
 /// The place of the wedge numbered `serial` in `list`, looking from `place` on, then back from
@@ -453,7 +453,8 @@ impl<S: Scalar> WedgeLists<S> {
 
     /// Replaces the wedges `first..end` of the new wedge's edge list by the pieces. The first
     /// piece of an existing wedge keeps its serial, and so its queue event (trimming only
-    /// raises its key, and the event is re-queued with the new key when it pops); a second
+    /// raises its key, and the event is re-queued with the new key when it pops, unless the
+    /// rise is within [`EARLY`]); a second
     /// piece (the new wedge won in its middle) is a wedge of its own, cut from it as it was,
     /// with the anchor of its end. Waiting wedges that continue one another
     /// ([`Entry::continued_by`]), among the pieces and with the waiting wedges beside them,
