@@ -236,6 +236,7 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     let (sectors, unfolding) = match sources[..] {
         [SurfacePoint::Vertex(v)]
             if options.threads > 1
+                && mesh.validation().edge_length_span <= SECTOR_SPAN
                 && options.vertices_only
                 && stop_points.is_empty()
                 && !keeps_values::<S>() =>
@@ -280,6 +281,16 @@ pub fn propagate_with_progress<'m, S: Scalar>(
     });
     Ok(engine.merged(other).finish(started))
 }
+
+/// The largest span of edge lengths (longest over shortest) on which a run splits into two
+/// sectors. A sector's engine trims its wedges against the other's only by the vertices'
+/// distances, not on the edges: along an edge 3e8 long, images of the source that wound round
+/// a far vertex, each turn a fraction of a unit longer than the direct one, lost to no vertex
+/// path and went round some 60k times (a 12-face mesh of the degeneracy corpus with a span of
+/// 1.1e9: 61,705 wedges against 25 on one thread, and minutes on a 98-face one). On one
+/// engine the direct image's wedge trims them on their edge at once. The shared models span
+/// at most 3.6e3; no case of the corpus below this span is slow on two sectors.
+const SECTOR_SPAN: f64 = (1u64 << 20) as f64;
 
 /// What a wedge of a (pseudo-)source keeps, if given: its distances at its edge's vertices, its
 /// pseudo-source in the frame of a flat region, and its path.

@@ -26,9 +26,9 @@ pub struct DistanceArgs {
     #[arg(long)]
     out: Option<PathBuf>,
     /// Threads (default: every core on meshes of 15,000 faces or more, else 1): two propagate
-    /// two sectors of a single source vertex's directions at once (f64 and adaptive); the
-    /// distances are those of one thread up to the last bits where geodesics from the two
-    /// sectors tie.
+    /// two sectors of a single source vertex's directions at once (f64 and adaptive; one
+    /// thread where edge lengths span more than 2^20); the distances are those of one thread
+    /// up to the last bits where geodesics from the two sectors tie.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: Option<u32>,
 }
