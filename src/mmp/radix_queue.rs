@@ -15,11 +15,19 @@
 //! cache (cachegrind), for 0.04-0.7 MiB more peak memory (eight bits: 4 % fewer instructions
 //! but 4 % more first-level misses and 1.2 MiB more on the bunny).
 //!
-//! Events of equal keys leave in the queue's own order, as they left the binary heap in its
-//! own (a different one: ties between wedges of equal distance functions, which stays on an
-//! edge, can come out the other way). Keys queued behind the front (a child wedge's smallest
-//! distance, rounded, can fall an ulp short of its parent's) are queued at the front's key:
-//! due at once, as they are by their own key.
+//! Keys are ordered to [`KEY_RESOLUTION`]: each positive normal one is rounded down to its
+//! twelve leading bits, and taken out with that value. Continuous Dijkstra needs no finer order: every event queued
+//! later lies beyond the rounded key taken out, since it lies beyond the true one, and that is
+//! all that final vertices and given-up edges rest on (the order among events within one step
+//! is as free as among events of equal keys). The rounding spares the moves of the lowest
+//! levels: from v0, 6.9 % fewer instructions on stanford_bunny, 7.7 % on fandisk, 5.6 % on
+//! rocker_arm, 3.4 % on icosphere5, the same wedges propagated to within 1.3 % (fewer on
+//! fandisk, 0.5 % more created on the bunny), and the vertices' distances changed in their
+//! last bits (1e-14 at most on these).
+//!
+//! Events of equal rounded keys leave in the queue's own order. Keys queued behind the front
+//! (a child wedge's smallest distance, rounded, can fall an ulp short of its parent's) are
+//! queued at the front's key: due at once, as they are by their own key.
 //!
 //! [AMOT90]: R. K. Ahuja, K. Mehlhorn, J. Orlin, R. E. Tarjan, Faster algorithms for the
 //! shortest path problem, J. ACM 37(2), 1990.
@@ -38,6 +46,14 @@ fn key_of(radix: u64) -> f64 {
     let flip = if radix >> 63 == 1 { 1 << 63 } else { u64::MAX };
     f64::from_bits(radix ^ flip)
 }
+
+/// The bits of a key's [`radix_key`] integer below its twelve leading bits of mantissa.
+const ROUNDED_BITS: u32 = 40;
+
+/// The relative step to which keys are ordered: keys within it of each other may leave in
+/// either order ([`RadixQueue::push`]).
+pub(crate) const KEY_RESOLUTION: f64 =
+    1.0 / (1u64 << (f64::MANTISSA_DIGITS - 1 - ROUNDED_BITS)) as f64;
 
 /// The most items an emptied bucket keeps room for: few, since the buckets are many (705; 256
 /// items each, as the one-bit queue's 65 kept, could hold 4 MiB of 24-byte events).
@@ -77,8 +93,8 @@ fn mark(filled: &mut [u64; WORDS], words: &mut u64, b: usize) {
     }
 }
 
-/// Items due at `f64` keys, taken out nearest first (among items of one key, in the queue's
-/// own order).
+/// Items due at `f64` keys, taken out nearest first to [`KEY_RESOLUTION`] (among items of one
+/// rounded key, in the queue's own order).
 pub(crate) struct RadixQueue<T> {
     /// The key of the last item taken out (the front), as [`radix_key`]'s integer.
     front: u64,
@@ -116,13 +132,23 @@ impl<T> RadixQueue<T> {
         mark(&mut self.filled, &mut self.words, b);
     }
 
-    /// Queues `item` at `key`, or at the front's key if `key` lies behind it.
+    /// Queues `item` at `key`, rounded down to [`KEY_RESOLUTION`] if positive and normal, or at
+    /// the front's key if that lies behind it.
     pub(crate) fn push(&mut self, key: f64, item: T) {
-        self.file(radix_key(key).max(self.front), item);
+        let radix = radix_key(key);
+        // A negative key's integer has its bits flipped: clearing them would set the key's own
+        // (and make -inf a NaN); distances are not negative. A subnormal key has fewer leading
+        // bits than the resolution counts on: rounded, 5e-324 became 0, and a wedge there, due
+        // only beyond its key, came up at 0 again for ever.
+        let rounded = match (radix >> 63, (radix >> 52) & 0x7ff) {
+            (1, 1..) => radix & !((1 << ROUNDED_BITS) - 1),
+            _ => radix,
+        };
+        self.file(rounded.max(self.front), item);
         self.len += 1;
     }
 
-    /// The nearest item and its key.
+    /// The nearest item and its key as queued (rounded).
     pub(crate) fn pop(&mut self) -> Option<(f64, T)> {
         if self.buckets[0].is_empty() {
             if self.words == 0 {
@@ -187,22 +213,29 @@ mod tests {
     }
 
     proptest! {
-        /// Keys come out in sorted order, pushes interleaved at or beyond the front; a key
-        /// behind the front comes out at the front's key. Keys are few multiples of powers of
-        /// two beyond the front, from 2^-40 to 2^20, so that many are equal and the others
-        /// differ from the front in digits of every level.
+        /// Keys come out in the order of their values rounded down to the resolution, each
+        /// with that value, pushes interleaved at or beyond the front; a key behind the front
+        /// comes out at the front's key. Keys are few multiples of powers of two beyond the
+        /// front, from 2^-40 to 2^20, so that many are equal and the others differ from the
+        /// front in digits of every level, and their rounding matters.
         #[test]
-        fn pops_come_out_nearest_first(
+        fn pops_come_out_nearest_first_to_the_resolution(
             steps in prop::collection::vec((0u32..6, -40i32..20, 0usize..4), 1..300),
         ) {
+            // Rounded down to 12 significant bits: the binary exponent, then the step.
+            let rounded = |k: f64| {
+                let exponent = ((k.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+                let step = 2f64.powi(exponent) * KEY_RESOLUTION;
+                if k.is_normal() && k > 0.0 { (k / step).floor() * step } else { k }
+            };
             let mut queue = RadixQueue::new();
             let mut reference: Vec<f64> = Vec::new();
             let mut front = f64::NEG_INFINITY;
             for (i, &(offset, scale, pops)) in steps.iter().enumerate() {
                 let beyond = f64::from(offset) * 2f64.powi(scale);
-                let key = if i % 7 == 3 { front - 1.0 } else { front.max(0.0) + beyond };
+                let key = if i % 7 == 3 { front - 1.0 } else { front.max(0.0) + beyond + beyond / 3.0 };
                 queue.push(key, i);
-                reference.push(key.max(front));
+                reference.push(rounded(key).max(front));
                 for _ in 0..pops {
                     reference.sort_by(|a, b| b.total_cmp(a));
                     let expected = reference.pop();
@@ -215,5 +248,35 @@ mod tests {
                 prop_assert_eq!(queue.len(), reference.len());
             }
         }
+    }
+
+    /// Subnormal keys keep their bits: rounded, they would fall to 0.
+    #[test]
+    fn subnormal_keys_are_not_rounded() {
+        let mut queue = RadixQueue::new();
+        let tiny = 5e-324;
+        queue.push(tiny, 0);
+        queue.push(0.0, 1);
+        assert_eq!(queue.pop(), Some((0.0, 1)));
+        assert_eq!(queue.pop(), Some((tiny, 0)));
+    }
+
+    #[test]
+    fn keys_within_the_resolution_leave_in_either_order_and_those_apart_in_theirs() {
+        let mut queue = RadixQueue::new();
+        let one = 1.0 + KEY_RESOLUTION;
+        for (key, item) in [
+            (one + KEY_RESOLUTION / 2.0, 0),
+            (one, 1),
+            (one + KEY_RESOLUTION, 2),
+        ] {
+            queue.push(key, item);
+        }
+        // The first two round to one key and leave together, before the third.
+        let mut first = [queue.pop().unwrap(), queue.pop().unwrap()];
+        first.sort_by_key(|x| x.1);
+        assert_eq!(first, [(one, 0), (one, 1)]);
+        assert_eq!(queue.pop(), Some((one + KEY_RESOLUTION, 2)));
+        assert_eq!(queue.pop(), None);
     }
 }

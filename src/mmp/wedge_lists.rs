@@ -11,6 +11,7 @@ use super::edge_wedges::EdgeWedges;
 use super::intersect::{cut_into_pieces, Owner, Piece};
 use super::paths::CongruentPaths;
 use super::provenance::{compare_ends, keeps_values, one_end, range_end, Provenance, RangeEnd};
+use super::radix_queue::KEY_RESOLUTION;
 use super::stats::Stats;
 use super::strips::OfferedWedges;
 use super::wedge::{wedge_fields, PseudoSource, Wedge, WedgeFields};
@@ -198,16 +199,17 @@ pub(crate) enum Due<S: Scalar> {
 
 /// How far beyond the front, as a fraction of the front's distance, a wedge trimmed since it
 /// was queued may lie and still be propagated when its event comes up, rather than queued
-/// again at its new smallest distance. Its children still give no distance nearer than the
-/// front (they lie beyond the wedge's smallest distance), which is all that vertices being
-/// final, stop points and giving up edges rest on; what changes is the order of wedges within
-/// that fraction, as rounding changes it among keys that tie. Trimming an end of a wedge mostly
-/// raises its smallest distance by 1e-7 to 1e-4 of it: from v0 of icosphere5, 278k events
-/// came up before their wedges (478k propagated) and were queued again, each costing a pop
-/// and a push; with this slack 154 do, and the run takes 6.5 % fewer instructions (rocker_arm
-/// 43.8k requeues -> 3.9k, 1.5 %; stanford_bunny 221k -> 14k, 1.7 %), the same wedges
-/// propagated within 0.01 % (fewer created).
-const EARLY: f64 = 1.0 / 4096.0;
+/// again at its new smallest distance: the queue's resolution ([`KEY_RESOLUTION`]), within
+/// which it orders no keys anyway (and no less, or a wedge queued again within it would come
+/// up again at once, for ever). Its children still give no distance nearer than the front
+/// (they lie beyond the wedge's smallest distance), which is all that vertices being final,
+/// stop points and giving up edges rest on. Trimming an end of a wedge mostly raises its
+/// smallest distance by 1e-7 to 1e-4 of it: from v0 of icosphere5, 278k events came up before
+/// their wedges (478k propagated) and were queued again, each costing a pop and a push; with
+/// this slack 154 do, and the run takes 6.5 % fewer instructions (rocker_arm 43.8k requeues -> 3.9k,
+/// 1.5 %; stanford_bunny 221k -> 14k, 1.7 %), the same wedges propagated within 0.01 %
+/// (fewer created).
+const EARLY: f64 = KEY_RESOLUTION;
 
 /// The place of the wedge numbered `serial` in `list`, looking from `place` on, then back from
 /// it: wedges inserted before it since it was queued there moved it to the right, and wedges
