@@ -275,17 +275,16 @@ fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<(f64, f64)>>
                     .iter()
                     .find(|&&k| k != i && k != j)
                     .expect("a third corner");
-                let (d, a) = across(
-                    p,
-                    (j, distance[j.index()], angle[j.index()]),
-                    (k, distance[k.index()], angle[k.index()]),
-                    i,
-                    wrap,
-                )
-                .unwrap_or_else(|| (distance[j.index()] + p(i).distance(p(j)), angle[j.index()]));
+                let (dj, aj) = (distance[j.index()], angle[j.index()]);
+                let (dk, ak) = (distance[k.index()], angle[k.index()]);
+                let crossing = across(p, (j, dj), (k, dk, ak), i);
+                let d = match &crossing {
+                    Some(c) => c.distance,
+                    None => dj + p(i).distance(p(j)),
+                };
                 if d < distance[i.index()] {
                     distance[i.index()] = d;
-                    angle[i.index()] = a;
+                    angle[i.index()] = crossing.map_or(aj, |c| c.angle(aj, ak, wrap));
                     queue.push((Reverse(d.to_bits()), i));
                 }
             }
@@ -321,17 +320,52 @@ fn directions(mesh: &TriMesh, v: VertexId, fan: &Fan) -> Vec<Option<(f64, f64)>>
         .collect()
 }
 
-/// The distance and angle that corners `j` and `k` of a face, reached at their distances and
-/// angles, give its third corner `i`: from the point their distances place on the far side of
-/// the edge `jk` from `i` (the source, unfolded), where the straight way to `i` crosses that
-/// edge; `None` where it does not, or no such point is.
+/// Where the straight way to a face's third corner `i` from the source, unfolded by the
+/// distances of corners `j` and `k`, crosses the edge `jk` ([`across`]): the way's length, and
+/// the directions from the source to `j`, `k` and `i` in the unfolding (edge `jk` along the
+/// first axis from `j`), from which [`Crossing::angle`] interpolates `i`'s angle.
+struct Crossing {
+    distance: f64,
+    to_j: [f64; 2],
+    to_k: [f64; 2],
+    to_i: [f64; 2],
+}
+
+impl Crossing {
+    /// The angle of corner `i`, given those of `j` and `k`, as far from `aj` towards `ak` as
+    /// the angle at the source from `j` to `i` is a share of that from `j` to `k`: exact where
+    /// the faces between lie in one plane. Asked only where the crossing lowers `i`'s distance
+    /// (two arc tangents).
+    fn angle(&self, aj: f64, ak: f64, wrap: Option<f64>) -> f64 {
+        // Unwrapped across a closed fan's first neighbour, where angles start again at 0.
+        let ak = match wrap {
+            Some(total) if (ak - aj).abs() > total / 2.0 => ak - total * (ak - aj).signum(),
+            _ => ak,
+        };
+        let between = |a: [f64; 2], b: [f64; 2]| {
+            (a[0] * b[1] - a[1] * b[0])
+                .atan2(a[0] * b[0] + a[1] * b[1])
+                .abs()
+        };
+        let (alpha, beta) = (between(self.to_j, self.to_i), between(self.to_j, self.to_k));
+        if beta > 0.0 {
+            aj + (ak - aj) * (alpha / beta)
+        } else {
+            aj
+        }
+    }
+}
+
+/// The way to corner `i` of a face from the point that the distances of its corners `j` and
+/// `k` place on the far side of the edge `jk` from `i` (the source, unfolded), where it crosses
+/// that edge; `None` where it does not, or no such point is (or `k`, at distance `dk` and
+/// angle `ak`, is not reached).
 fn across(
     p: impl Fn(VertexId) -> DVec3,
-    (j, dj, aj): (VertexId, f64, f64),
+    (j, dj): (VertexId, f64),
     (k, dk, ak): (VertexId, f64, f64),
     i: VertexId,
-    wrap: Option<f64>,
-) -> Option<(f64, f64)> {
+) -> Option<Crossing> {
     if !dk.is_finite() || ak.is_nan() {
         return None;
     }
@@ -349,27 +383,12 @@ fn across(
     if !(0.0..=length).contains(&t) {
         return None;
     }
-    let d = ((xi - xs).powi(2) + (yi - ys).powi(2)).sqrt();
-    // Unwrapped across a closed fan's first neighbour, where angles start again at 0.
-    let ak = match wrap {
-        Some(total) if (ak - aj).abs() > total / 2.0 => ak - total * (ak - aj).signum(),
-        _ => ak,
-    };
-    // The angle at the source from `j` to `i`, as a share of that from `j` to `k`: exact
-    // where the faces between lie in one plane.
-    let between = |a: [f64; 2], b: [f64; 2]| {
-        (a[0] * b[1] - a[1] * b[0])
-            .atan2(a[0] * b[0] + a[1] * b[1])
-            .abs()
-    };
-    let (to_j, to_k, to_i) = ([-xs, -ys], [length - xs, -ys], [xi - xs, yi - ys]);
-    let (alpha, beta) = (between(to_j, to_i), between(to_j, to_k));
-    let a = if beta > 0.0 {
-        aj + (ak - aj) * (alpha / beta)
-    } else {
-        aj
-    };
-    Some((d, a))
+    Some(Crossing {
+        distance: ((xi - xs).powi(2) + (yi - ys).powi(2)).sqrt(),
+        to_j: [-xs, -ys],
+        to_k: [length - xs, -ys],
+        to_i: [xi - xs, yi - ys],
+    })
 }
 
 #[cfg(test)]
