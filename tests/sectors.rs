@@ -213,35 +213,7 @@ proptest! {
 /// one thread's distances.
 #[test]
 fn a_mesh_of_edges_spanning_a_billion_runs_on_one_thread() {
-    let positions = vec![
-        [1e-4, 0.0, 0.0],
-        [2e-7, 0.0, -0.271728515625],
-        [3000.0, 0.0, 0.1005859375],
-        [4.0, 0.0, 0.345703125],
-        [1e-3, 1.0, 0.315185546875],
-        [2000.0, 1.0, -0.025634765625],
-        [3e8, 1.0, 0.465087890625],
-        [4e-5, 1.0, 0.3583984375],
-        [1000.0, 2.0, -0.23095703125],
-        [200.0, 2.0, 0.290771484375],
-        [30.0, 2.0, 0.076171875],
-        [4e-6, 2.0, 0.406982421875],
-    ];
-    let faces = vec![
-        [0, 1, 5],
-        [0, 5, 4],
-        [1, 2, 6],
-        [1, 6, 5],
-        [2, 3, 7],
-        [2, 7, 6],
-        [4, 5, 8],
-        [5, 9, 8],
-        [5, 6, 10],
-        [5, 10, 9],
-        [6, 7, 10],
-        [7, 11, 10],
-    ];
-    let mesh = TriMesh::new(positions, faces).expect("a usable mesh");
+    let mesh = data_mesh("sector_winding_12.obj");
     assert!(mesh.validation().edge_length_span > 1e9);
     let two = run::<f64>(&mesh, 5, 2);
     assert_eq!(two.stats().sectors, 1);

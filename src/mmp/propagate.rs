@@ -250,11 +250,31 @@ pub fn propagate_with_progress<'m, S: Scalar>(
         _ => (None, Unfolding::new(mesh, &sources)),
     };
     let unfolding = Arc::new(unfolding);
-    let Some([first, second]) = sectors else {
-        let mut engine = Engine::new(mesh, options, (sources, &stop_points), unfolding, None);
-        engine.propagate(&mut progress);
-        return Ok(engine.finish(started));
+    let run = (sources.clone(), Arc::clone(&unfolding));
+    let limit = SECTOR_LIST_LIMIT;
+    let engine = match sectors
+        .and_then(|s| propagate_sectors(mesh, options, run, s, limit, &mut progress))
+    {
+        Some(merged) => merged,
+        None => {
+            let mut engine = Engine::new(mesh, options, (sources, &stop_points), unfolding, None);
+            engine.propagate(&mut progress);
+            engine
+        }
     };
+    Ok(engine.finish(started))
+}
+
+/// The engines of two sectors of a source vertex's directions run at once, merged; `None` if
+/// one gave up, an edge of its own holding more than `list_limit` wedges.
+fn propagate_sectors<'m, S: Scalar>(
+    mesh: &'m TriMesh,
+    options: &PropagateOptions,
+    (sources, unfolding): (Vec<SurfacePoint>, Arc<Unfolding<S>>),
+    [first, second]: [Sector; 2],
+    list_limit: usize,
+    progress: &mut impl FnMut(&Progress),
+) -> Option<Engine<'m, S>> {
     let extent = mesh
         .positions()
         .iter()
@@ -264,23 +284,34 @@ pub fn propagate_with_progress<'m, S: Scalar>(
         mesh.vertex_count(),
         extent * mesh.unit_scale(),
     ));
+    let engine = |sector| {
+        let (unfolding, sector) = (Arc::clone(&unfolding), Some((sector, &bounds)));
+        let mut engine = Engine::new(mesh, options, (sources.clone(), &[]), unfolding, sector);
+        engine.list_limit = list_limit;
+        engine
+    };
     let (engine, other) = std::thread::scope(|scope| {
         let worker = scope.spawn(|| {
-            let (unfolding, sector) = (Arc::clone(&unfolding), Some((second, &bounds)));
-            let mut other = Engine::new(mesh, options, (sources.clone(), &[]), unfolding, sector);
+            let mut other = engine(second);
             other.propagate(&mut |_: &Progress| {});
             other
         });
-        let (unfolding, sector) = (Arc::clone(&unfolding), Some((first, &bounds)));
-        let mut engine = Engine::new(mesh, options, (sources.clone(), &[]), unfolding, sector);
-        engine.propagate(&mut progress);
-        (
-            engine,
-            worker.join().expect("the other sector's propagation"),
-        )
+        let mut mine = engine(first);
+        mine.propagate(progress);
+        (mine, worker.join().expect("the other sector's propagation"))
     });
-    Ok(engine.merged(other).finish(started))
+    (!engine.gave_up && !other.gave_up).then(|| engine.merged(other))
 }
+
+/// The most wedges an edge's list may hold in a sector's engine: beyond, it gives up, and the
+/// run starts again on one engine. The other sector's paths are known to it only at vertices
+/// (`bounds.rs`), which on some meshes leaves images of the source going round and round
+/// unbeaten, one more wedge on an edge each turn (see [`SECTOR_SPAN`]), where one engine trims
+/// them on the edge at once. A guard for such runs on meshes within the span: without the
+/// span's limit, the 98-face mesh that took 187 s gave up after 1.6 s. No run of the shared
+/// models or of icosphere level 6 holds more than 182 wedges on an edge. Checked every 8,192
+/// events, off the event loop's path.
+const SECTOR_LIST_LIMIT: usize = 1 << 14;
 
 /// The largest span of edge lengths (longest over shortest) on which a run splits into two
 /// sectors. A sector's engine trims its wedges against the other's only by the vertices'
@@ -325,6 +356,10 @@ struct Engine<'m, S: Scalar> {
     /// The sector of the source's directions this engine propagates, and the distances the
     /// other sector's engine has found, where two propagate at once (see `sectors.rs`).
     sector: Option<(Sector, Arc<SharedBounds>)>,
+    /// The most wedges an edge may hold before the engine gives up its sector (see
+    /// [`SECTOR_LIST_LIMIT`]); whether it did.
+    list_limit: usize,
+    gave_up: bool,
     stats: Stats,
 }
 
@@ -417,6 +452,8 @@ impl<'m, S: Scalar> Engine<'m, S> {
             max_distance,
             precision_cap: options.precision_cap,
             stop,
+            list_limit: usize::MAX,
+            gave_up: false,
             sector: sector.map(|(sector, bounds)| (sector, Arc::clone(bounds))),
             stats: Stats::default(),
         }
@@ -492,6 +529,10 @@ impl<'m, S: Scalar> Engine<'m, S> {
             }
             events += 1;
             if events % 8192 == 0 {
+                if self.wedges.longest() > self.list_limit {
+                    self.gave_up = true;
+                    break;
+                }
                 progress(&Progress {
                     vertices_reached: self.reached(),
                     vertex_count: self.mesh.vertex_count(),
@@ -1359,5 +1400,51 @@ fn known_at<S: Scalar>(front: &Front<S>, bounds: Option<&SharedBounds>, v: Verte
     match (own, bounds.and_then(|b| b.beyond(v)).map(S::from_f64)) {
         (Some(a), Some(b)) if b.compare_distance(&a) == Ordering::Less => Some(b),
         (a, b) => a.or(b),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::io::{read_from, MeshFormat};
+    use crate::mesh::shapes;
+
+    /// Two sectors from vertex `v`, their engines giving up beyond `list_limit` wedges on an
+    /// edge: the merged run's counters, or `None` if one gave up.
+    fn sectors_from(mesh: &TriMesh, v: u32, list_limit: usize) -> Option<Stats> {
+        let sources = vec![SurfacePoint::Vertex(VertexId(v))];
+        let sectors = split(mesh, VertexId(v)).expect("two sectors");
+        let unfolding = Arc::new(Unfolding::<f64>::new(mesh, &sources));
+        let mut options = PropagateOptions::default().with_threads(2);
+        options.vertices_only = true;
+        let run = (sources, unfolding);
+        let merged = propagate_sectors(mesh, &options, run, sectors, list_limit, &mut |_| {});
+        merged.map(|engine| engine.stats)
+    }
+
+    /// Where images of the source wind round a far vertex unbeaten by the other sector's
+    /// vertex distances (a mixed-magnitude mesh of the degeneracy corpus, whose span of edge
+    /// lengths keeps it off two sectors otherwise), an edge's list grows past the limit and the
+    /// sectors give up; on an icosphere they do not.
+    #[test]
+    fn sectors_give_up_where_an_edge_list_runs_away() {
+        let obj = include_str!("../../tests/data/sector_winding_12.obj");
+        let mesh = read_from(
+            obj.as_bytes(),
+            MeshFormat::Obj,
+            "winding",
+            &Default::default(),
+        )
+        .expect("a mesh");
+        let unlimited = sectors_from(&mesh, 5, usize::MAX).expect("no limit to reach");
+        assert!(
+            unlimited.wedges_created > 10_000,
+            "{}",
+            unlimited.wedges_created
+        );
+        assert!(sectors_from(&mesh, 5, 1024).is_none());
+        let sphere = shapes::icosphere(3);
+        let stats = sectors_from(&sphere, 0, SECTOR_LIST_LIMIT).expect("within the limit");
+        assert_eq!(stats.sectors, 2);
     }
 }

@@ -244,6 +244,8 @@ pub(crate) struct WedgeLists<S: Scalar> {
     serials: Vec<u32>,
     /// Wedges in all lists.
     entries: usize,
+    /// The most wedges an edge's list has had room for.
+    longest: usize,
     /// Keep a log of every meeting of two wedges ([`Stats::decisions`]).
     record_decisions: bool,
     scratch: Scratch<S>,
@@ -261,6 +263,7 @@ impl<S: Scalar> WedgeLists<S> {
             closed: vertices_only.then(|| vec![false; edge_count]),
             serials: vec![0; edge_count],
             entries: 0,
+            longest: 0,
             record_decisions,
             scratch: Scratch::default(),
         }
@@ -301,6 +304,12 @@ impl<S: Scalar> WedgeLists<S> {
             stats.wedges_joined += 1;
         }
         Due::Now(wedge, kept)
+    }
+
+    /// The most wedges an edge's list has had room for so far (at least its most wedges, and
+    /// less than 1.5 times them).
+    pub(crate) fn longest(&self) -> usize {
+        self.longest
     }
 
     /// When only vertex distances are asked for and every wedge of edge `e` has been
@@ -721,6 +730,7 @@ impl<S: Scalar> WedgeLists<S> {
                 // 1 % fewer instructions for 1 % more peak memory).
                 let grown = (needed + needed / 2).max(needed + 5);
                 list.reserve_exact(grown - list.len());
+                self.longest = self.longest.max(grown);
             }
             let at = start + common;
             if added - removed <= 2 {
