@@ -250,11 +250,11 @@ pub fn propagate_with_progress<'m, S: Scalar>(
         _ => (None, Unfolding::new(mesh, &sources)),
     };
     let unfolding = Arc::new(unfolding);
-    let run = (sources.clone(), Arc::clone(&unfolding));
-    let limit = SECTOR_LIST_LIMIT;
-    let engine = match sectors
-        .and_then(|s| propagate_sectors(mesh, options, run, s, limit, &mut progress))
-    {
+    let sectors = sectors.and_then(|s| {
+        let run = (sources.clone(), Arc::clone(&unfolding));
+        propagate_sectors(mesh, options, run, s, SECTOR_LIST_LIMIT, &mut progress)
+    });
+    let engine = match sectors {
         Some(merged) => merged,
         None => {
             let mut engine = Engine::new(mesh, options, (sources, &stop_points), unfolding, None);

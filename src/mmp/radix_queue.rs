@@ -16,14 +16,14 @@
 //! but 4 % more first-level misses and 1.2 MiB more on the bunny).
 //!
 //! Keys are ordered to [`KEY_RESOLUTION`]: each positive normal one is rounded down to its
-//! twelve leading bits, and taken out with that value. Continuous Dijkstra needs no finer order: every event queued
-//! later lies beyond the rounded key taken out, since it lies beyond the true one, and that is
-//! all that final vertices and given-up edges rest on (the order among events within one step
-//! is as free as among events of equal keys). The rounding spares the moves of the lowest
-//! levels: from v0, 6.9 % fewer instructions on stanford_bunny, 7.7 % on fandisk, 5.6 % on
-//! rocker_arm, 3.4 % on icosphere5, the same wedges propagated to within 1.3 % (fewer on
-//! fandisk, 0.5 % more created on the bunny), and the vertices' distances changed in their
-//! last bits (1e-14 at most on these).
+//! twelve leading bits, and taken out with that value. Continuous Dijkstra needs no finer
+//! order: every event queued later lies beyond the rounded key taken out, since it lies beyond
+//! the true one, and that is all that final vertices and given-up edges rest on (the order
+//! among events within one step is as free as among events of equal keys). The rounding
+//! spares the moves of the lowest levels: from v0, 6.9 % fewer instructions on
+//! stanford_bunny, 7.7 % on fandisk, 5.6 % on rocker_arm, 3.4 % on icosphere5, the same
+//! wedges propagated to within 1.3 % (fewer on fandisk, 0.5 % more created on the bunny),
+//! and the vertices' distances changed in their last bits (1e-14 at most on these).
 //!
 //! Events of equal rounded keys leave in the queue's own order. Keys queued behind the front
 //! (a child wedge's smallest distance, rounded, can fall an ulp short of its parent's) are
@@ -233,7 +233,10 @@ mod tests {
             let mut front = f64::NEG_INFINITY;
             for (i, &(offset, scale, pops)) in steps.iter().enumerate() {
                 let beyond = f64::from(offset) * 2f64.powi(scale);
-                let key = if i % 7 == 3 { front - 1.0 } else { front.max(0.0) + beyond + beyond / 3.0 };
+                let key = match i % 7 {
+                    3 => front - 1.0,
+                    _ => front.max(0.0) + beyond + beyond / 3.0,
+                };
                 queue.push(key, i);
                 reference.push(rounded(key).max(front));
                 for _ in 0..pops {

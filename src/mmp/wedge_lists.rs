@@ -206,9 +206,9 @@ pub(crate) enum Due<S: Scalar> {
 /// stop points and giving up edges rest on. Trimming an end of a wedge mostly raises its
 /// smallest distance by 1e-7 to 1e-4 of it: from v0 of icosphere5, 278k events came up before
 /// their wedges (478k propagated) and were queued again, each costing a pop and a push; with
-/// this slack 154 do, and the run takes 6.5 % fewer instructions (rocker_arm 43.8k requeues -> 3.9k,
-/// 1.5 %; stanford_bunny 221k -> 14k, 1.7 %), the same wedges propagated within 0.01 %
-/// (fewer created).
+/// this slack 154 do, and the run takes 6.5 % fewer instructions (rocker_arm 43.8k requeues
+/// -> 3.9k, 1.5 %; stanford_bunny 221k -> 14k, 1.7 %), the same wedges propagated within
+/// 0.01 % (fewer created).
 const EARLY: f64 = KEY_RESOLUTION;
 
 /// The place of the wedge numbered `serial` in `list`, looking from `place` on, then back from
