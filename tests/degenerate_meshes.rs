@@ -77,15 +77,7 @@ fn disconnected_parts_and_loose_vertices_are_unreachable() {
 
 #[test]
 fn bowtie_vertex_joins_its_fans() {
-    // Two triangles meeting only at vertex 0.
-    let positions = vec![
-        [0.0, 0.0, 0.0],
-        [1.0, 0.0, 0.0],
-        [0.0, 1.0, 0.0],
-        [-1.0, 0.0, 0.0],
-        [0.0, -1.0, 0.0],
-    ];
-    let mesh = TriMesh::new(positions, vec![[0, 1, 2], [0, 3, 4]]).expect("usable mesh");
+    let mesh = common::bowtie();
     assert_eq!(mesh.validation().non_manifold_vertices, vec![VertexId(0)]);
     let d = from_vertex(&mesh, 1);
     assert!(
