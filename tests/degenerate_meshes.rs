@@ -77,7 +77,7 @@ fn disconnected_parts_and_loose_vertices_are_unreachable() {
 
 #[test]
 fn bowtie_vertex_joins_its_fans() {
-    let mesh = common::bowtie();
+    let mesh = shapes::bowtie();
     assert_eq!(mesh.validation().non_manifold_vertices, vec![VertexId(0)]);
     let d = from_vertex(&mesh, 1);
     assert!(

@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::{bowtie, brute_force_vertex_distances, data_mesh, strategies::degenerate_case};
+use common::{brute_force_vertex_distances, data_mesh, strategies::degenerate_case};
 use exact_geodesics::degeneracy::{degenerate_mesh, relatively_close};
 use exact_geodesics::mesh::shapes;
 use exact_geodesics::scalar::{Adaptive, Real};
@@ -161,7 +161,7 @@ fn runs_that_cannot_be_split_run_on_one_thread() {
     };
     assert_eq!(run(&[on_edge], &two), 1);
     // Where two fans of faces meet at a vertex, neither is all its directions.
-    let bowtie = bowtie();
+    let bowtie = shapes::bowtie();
     let field = propagate_vertices::<f64>(&bowtie, &[at(0)], &two).expect("valid");
     assert_eq!(field.stats().sectors, 1);
     // The exact backend proves ties by paths that one run sees whole.

@@ -149,17 +149,7 @@ mod tests {
         assert!((last - 2.0 * FRAC_PI_2).abs() < 1e-12, "{last}");
         assert!(open_fan(&grid, id(2, 1)).is_none());
         assert!(fan(&grid, id(2, 1)).is_some_and(|f| f.is_closed()));
-        let bowtie = TriMesh::new(
-            vec![
-                [0.0, 0.0, 0.0],
-                [1.0, 0.0, 0.0],
-                [0.0, 1.0, 0.0],
-                [-1.0, 0.0, 0.0],
-                [0.0, -1.0, 0.0],
-            ],
-            vec![[0, 1, 2], [0, 3, 4]],
-        )
-        .expect("a valid mesh");
+        let bowtie = shapes::bowtie();
         assert!(open_fan(&bowtie, VertexId(0)).is_none() && fan(&bowtie, VertexId(0)).is_none());
     }
 }

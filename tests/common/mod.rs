@@ -277,22 +277,6 @@ pub fn two_triangles() -> TriMesh {
     .expect("a usable mesh")
 }
 
-/// Two unit right triangles meeting only at vertex 0 (a bowtie): one on either side of it,
-/// their legs along the axes.
-pub fn bowtie() -> TriMesh {
-    TriMesh::new(
-        vec![
-            [0.0, 0.0, 0.0],
-            [1.0, 0.0, 0.0],
-            [0.0, 1.0, 0.0],
-            [-1.0, 0.0, 0.0],
-            [0.0, -1.0, 0.0],
-        ],
-        vec![[0, 1, 2], [0, 3, 4]],
-    )
-    .expect("a usable mesh")
-}
-
 /// The vertex distances from the vertex `source` in the backend `S`.
 pub fn distances<S: Scalar>(mesh: &TriMesh, source: u32) -> Vec<f64> {
     propagate::<S>(

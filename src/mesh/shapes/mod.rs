@@ -189,6 +189,21 @@ pub fn tetrahedron() -> TriMesh {
     )
 }
 
+/// Two unit right triangles meeting only at vertex 0, their legs along the axes, one on either
+/// side of it: the simplest vertex that is not a manifold's (a bowtie).
+pub fn bowtie() -> TriMesh {
+    build(
+        vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [-1.0, 0.0, 0.0],
+            [0.0, -1.0, 0.0],
+        ],
+        vec![[0, 1, 2], [0, 3, 4]],
+    )
+}
+
 /// The unit cube `[0, 1]^3`, each square split into two triangles.
 pub fn cube() -> TriMesh {
     build(
