@@ -3,7 +3,7 @@
 //! must be the one-thread run's (up to the last bits, where geodesics from the two sectors tie)
 //! and the known answers, round a closed fan of faces and across a boundary vertex's open one;
 //! runs that cannot be split (other sources, stop points, the exact backend, a source with no
-//! fan of faces) run on one thread.
+//! fan of faces, edge lengths spanning more than 2^20) run on one thread.
 
 mod common;
 
