@@ -465,13 +465,12 @@ impl<S: Scalar> WedgeLists<S> {
     /// Replaces the wedges `first..end` of the new wedge's edge list by the pieces. The first
     /// piece of an existing wedge keeps its serial, and so its queue event (trimming only
     /// raises its key, and the event is re-queued with the new key when it pops, unless the
-    /// rise is within [`EARLY`]); a second
-    /// piece (the new wedge won in its middle) is a wedge of its own, cut from it as it was,
-    /// with the anchor of its end. Waiting wedges that continue one another
-    /// ([`Entry::continued_by`]), among the pieces and with the waiting wedges beside them,
-    /// are joined into one, queued anew (the joined range may come nearer than the first
-    /// one's key); a wedge beside a propagated one that it continues joins it once it is
-    /// propagated itself ([`WedgeLists::due`]).
+    /// rise is within [`EARLY`]); a second piece (the new wedge won in its middle) is a wedge
+    /// of its own, cut from it as it was, with the anchor of its end. Waiting wedges that
+    /// continue one another ([`Entry::continued_by`]), among the pieces and with the waiting
+    /// wedges beside them, are joined into one, queued anew (the joined range may come nearer
+    /// than the first one's key); a wedge beside a propagated one that it continues joins it
+    /// once it is propagated itself ([`WedgeLists::due`]).
     fn rebuild(
         &mut self,
         (w, kept): (&Wedge<S>, &Provenance<S>),
