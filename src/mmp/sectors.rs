@@ -5,10 +5,20 @@
 //! covers about its own part of the surface. How evenly the work divides rests on a proxy:
 //! the directions in which the vertices lie, by discrete geodesic polar coordinates
 //! ([`directions`]), halved so that the two hold as many vertices within every distance as can
-//! be ([`balanced_sides`]): the engine that runs ahead takes on the other's ground before that
-//! one's paths there are published, so both stay busy to the end whatever the balance. From
-//! v0 of stanford_bunny the busier engine propagates 51-55 % as many wedges as a one-thread run
-//! (three runs; 55-60 % with the sides placed only by the vertices' count), on icosphere5 50.4 %.
+//! be ([`balanced_sides`]). From v0 of stanford_bunny the busier engine propagates 51-55 % as
+//! many wedges as a one-thread run (three runs; 55-60 % with the sides placed only by the
+//! vertices' count), on icosphere5 50.4 %.
+//!
+//! A run takes as long as the busier engine's share. The engine that runs ahead goes on into
+//! the other's ground before that one's paths there are published, but the other, whose paths
+//! there are shorter, propagates that ground again: with the engines' fronts held together (a
+//! scratch build in which an engine waited while ahead), rocker_arm from v0 propagated about as
+//! many wedges in all as one thread (326k against 323k; 378k running free) in the same time.
+//! The proxy's weak point is the directions. Past a saddle vertex, geodesics leave the source
+//! in that vertex's direction, so many vertices share a direction, which the polar coordinates
+//! spread and shift: from v0 of rocker_arm the sides chosen gave the engines 62 % and 38 % of
+//! the wedges (6,291 and 3,753 vertices), and moving one side by 0.15 of a face (3.3 to 3.45)
+//! moved a quarter of them from one engine to the other; sides at 0.7 and 3.5 gave 48 and 52 %.
 
 use super::fan::{fan, open_fan, Fan};
 use crate::mesh::{FaceId, TriMesh, VertexId};
