@@ -13,8 +13,7 @@
 //! the face-by-face expressions, and would lose accuracy in a frame far from the point at hand.
 
 use super::crease::{Crease, EdgeInRegion};
-use super::planar::Planar;
-use super::unfold::Apex;
+use super::planar::{Apex, Planar};
 use crate::mesh::{EdgeId, FaceId, TriMesh, VertexId};
 use crate::scalar::{Scalar, Sign};
 use std::collections::HashMap;

@@ -37,11 +37,12 @@ pub use coverage::{CoverageIssue, CoverageReport};
 pub use field::GeodesicField;
 pub use intersect::intersect;
 pub use propagate::{
-    geodesic_distances, propagate, propagate_shared, propagate_with_progress, Progress,
-    PropagateOptions,
+    propagate, propagate_shared, propagate_with_progress, Progress, PropagateOptions,
 };
 pub use source::{PointError, SurfacePoint};
 pub use stats::{Eq2Counts, Eq2Decision, Stats};
 pub use trace_back::{ExactPath, GeodesicPath, TraceError};
-pub use vertex_field::{propagate_vertices, propagate_vertices_with_progress, VertexField};
+pub use vertex_field::{
+    geodesic_distances, propagate_vertices, propagate_vertices_with_progress, VertexField,
+};
 pub use wedge::{PseudoSource, Wedge};

@@ -19,7 +19,6 @@ use super::stats::Stats;
 use super::stop::StopPoints;
 use super::strips::{OfferedWedges, Strip, Through};
 use super::unfold::{FaceLayout, Unfolding};
-use super::vertex_field::propagate_vertices;
 use super::wedge::{PseudoSource, Wedge, WedgeFields};
 use super::wedge_lists::{Arrivals, Due, WedgeLists, WedgeRef};
 use crate::mesh::{EdgeId, FaceId, Side, SourceId, TriMesh, VertexId};
@@ -173,29 +172,6 @@ pub fn propagate_shared<S: Scalar>(
     Ok(field
         .into_shared(Arc::clone(mesh))
         .expect("propagated on this mesh"))
-}
-
-/// The geodesic distance of every vertex, in file order, from the nearest of `sources`
-/// (`f64::INFINITY` where unreachable): [`propagate_vertices`](crate::propagate_vertices) and
-/// [`VertexField::vertex_distances`](crate::VertexField::vertex_distances) in one call, for
-/// the common case.
-///
-/// # Errors
-/// As [`propagate`].
-///
-/// # Example
-/// ```
-/// use exact_geodesics::{geodesic_distances, mesh::shapes, PropagateOptions, SurfacePoint, VertexId};
-/// let d = geodesic_distances::<f64>(&shapes::cube(), &[SurfacePoint::Vertex(VertexId(0))], &PropagateOptions::default())?;
-/// assert!((d[6] - 5f64.sqrt()).abs() < 1e-12);
-/// # Ok::<(), exact_geodesics::PointError>(())
-/// ```
-pub fn geodesic_distances<S: Scalar>(
-    mesh: &TriMesh,
-    sources: &[SurfacePoint],
-    options: &PropagateOptions,
-) -> Result<Vec<f64>, PointError> {
-    Ok(propagate_vertices::<S>(mesh, sources, options)?.vertex_distances())
 }
 
 /// [`propagate`], calling `progress` now and then with how far it got.

@@ -4,11 +4,11 @@
 //! was reached from.
 
 use super::field::GeodesicField;
-use super::planar::Planar;
+use super::planar::{Apex, Planar};
 use super::query::{Best, Via};
 use super::source::{PointError, SurfacePoint};
 use super::trace_loop::{Departure, LoopTie};
-use super::unfold::{Apex, FaceLayout};
+use super::unfold::FaceLayout;
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{EdgeId, FaceId, SourceId, VertexId};
 use crate::scalar::{Scalar, Sign};

@@ -9,7 +9,7 @@
 //! point from an edge's frame into the frames of the face's two other edges.
 
 use super::flat_region::FlatRegions;
-use super::planar::Planar;
+use super::planar::{Apex, Planar};
 use super::source::SurfacePoint;
 use super::wedge::{PseudoSource, Wedge};
 use crate::mesh::{
@@ -125,40 +125,28 @@ impl<S: Scalar> EdgeFrame<S> {
     }
 }
 
-/// The apex of a face in the frame of one of its edges. Both offsets along the edge are
-/// measured from their own end, and the height from the end nearer the apex: on a sliver
-/// whose far edge is a millionth of the edge at hand, `length - x` would lose the far edge's
-/// direction to cancellation, and rays unfolded across it would turn by as much, times their
-/// length.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Apex<S> {
-    /// Position along the edge, from the frame's first end.
-    pub x: S,
-    /// Position along the edge, from the frame's second end backwards (`length - x`).
-    pub far_x: S,
-    /// Distance from the edge's line, `h >= 0`.
-    pub h: S,
-}
-
-impl<S: Scalar> Apex<S> {
-    /// The apex `a` given the frames of its edge from each end (`frames[i]` starts at
-    /// `ends[i]`).
-    fn new(mesh: &TriMesh, frames: [&EdgeFrame<S>; 2], ends: [VertexId; 2], a: VertexId) -> Self {
-        let [v0, v1] = ends;
-        let p = vertex_point::<S>(mesh, a);
-        let (near, far) = (frames[0].planar(&p), frames[1].planar(&p));
-        // Which end is nearer is a choice of formula, not a decision: both heights are exact
-        // in exact arithmetic.
-        let span = |v: VertexId| {
-            let (q, r) = (mesh.position(v), mesh.position(a));
-            (0..3).fold(0.0f64, |m, i| m.max((q[i] - r[i]).abs()))
-        };
-        let h = if span(v0) <= span(v1) { near.y } else { far.y };
-        Apex {
-            x: near.x,
-            far_x: far.x,
-            h,
-        }
+/// The apex `a` of a face in the frame of its edge, given the edge's frames from each end
+/// (`frames[i]` starts at `ends[i]`).
+fn apex<S: Scalar>(
+    mesh: &TriMesh,
+    frames: [&EdgeFrame<S>; 2],
+    ends: [VertexId; 2],
+    a: VertexId,
+) -> Apex<S> {
+    let [v0, v1] = ends;
+    let p = vertex_point::<S>(mesh, a);
+    let (near, far) = (frames[0].planar(&p), frames[1].planar(&p));
+    // Which end is nearer is a choice of formula, not a decision: both heights are exact
+    // in exact arithmetic.
+    let span = |v: VertexId| {
+        let (q, r) = (mesh.position(v), mesh.position(a));
+        (0..3).fold(0.0f64, |m, i| m.max((q[i] - r[i]).abs()))
+    };
+    let h = if span(v0) <= span(v1) { near.y } else { far.y };
+    Apex {
+        x: near.x,
+        far_x: far.x,
+        h,
     }
 }
 
@@ -338,7 +326,7 @@ impl<S: Scalar> Unfolding<S> {
                     (Some(regions), _) if regions.region(wing.face).is_some() => {
                         regions.apex(mesh, (e, wing.face), &edge_length[i], wing.apex)
                     }
-                    (_, Some(backwards)) => Apex::new(mesh, [&frame, backwards], ends, wing.apex),
+                    (_, Some(backwards)) => apex(mesh, [&frame, backwards], ends, wing.apex),
                     (_, None) => continue,
                 };
                 let near_reversed = frame_ends(mesh, &reversed, wing.near)[0] == wing.apex;

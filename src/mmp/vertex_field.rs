@@ -113,3 +113,26 @@ pub fn propagate_vertices_with_progress<'m, S: Scalar>(
     let field = propagate_with_progress(mesh, sources, &options, progress)?;
     Ok(VertexField { field })
 }
+
+/// The geodesic distance of every vertex, in file order, from the nearest of `sources`
+/// (`f64::INFINITY` where unreachable): [`propagate_vertices`] and
+/// [`VertexField::vertex_distances`] in one call, for
+/// the common case.
+///
+/// # Errors
+/// As [`propagate`](crate::propagate).
+///
+/// # Example
+/// ```
+/// use exact_geodesics::{geodesic_distances, mesh::shapes, PropagateOptions, SurfacePoint, VertexId};
+/// let d = geodesic_distances::<f64>(&shapes::cube(), &[SurfacePoint::Vertex(VertexId(0))], &PropagateOptions::default())?;
+/// assert!((d[6] - 5f64.sqrt()).abs() < 1e-12);
+/// # Ok::<(), exact_geodesics::PointError>(())
+/// ```
+pub fn geodesic_distances<S: Scalar>(
+    mesh: &TriMesh,
+    sources: &[SurfacePoint],
+    options: &PropagateOptions,
+) -> Result<Vec<f64>, PointError> {
+    Ok(propagate_vertices::<S>(mesh, sources, options)?.vertex_distances())
+}
