@@ -31,6 +31,7 @@
 //! algebraic expressions*, ESA 2001.
 
 mod decimal;
+mod form;
 mod node;
 mod normal_form;
 mod refine;

@@ -20,7 +20,7 @@
 
 use super::super::bignum::{Float, Rational};
 use super::super::{Interval, Sign};
-use super::normal_form::Memo;
+use super::form::Memo;
 use std::collections::HashSet;
 use std::hash::{Hash, Hasher};
 use std::sync::{Arc, Mutex, OnceLock};

@@ -30,6 +30,7 @@
 
 use super::super::bignum::{Integer, Rational, Round};
 use super::super::{Field, Interval, Sign};
+use super::form::{Budget, Memo, Monomial, NormalForm};
 use super::node::{enclose, Node, Op};
 use std::cell::RefCell;
 use std::collections::{BTreeMap, HashMap};
@@ -38,50 +39,6 @@ use std::sync::Arc;
 
 mod coprime;
 mod product;
-
-/// What a normal form may cost before it is abandoned (and the zero left to the separation
-/// bound): the forms asked of every sign that a filter leaves open are cheap; the last resort
-/// of a zero that nothing else could prove may cost more.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-pub(crate) enum Budget {
-    Cheap,
-    LastResort,
-}
-
-impl Budget {
-    /// Normal forms with more terms than this are abandoned.
-    fn terms(self) -> usize {
-        match self {
-            Budget::Cheap => 256,
-            Budget::LastResort => 4096,
-        }
-    }
-
-    /// Products needing more term-by-term multiplications than this are abandoned.
-    fn product_work(self) -> usize {
-        match self {
-            Budget::Cheap => 2048,
-            Budget::LastResort => 65_536,
-        }
-    }
-
-    /// Term-by-term multiplications one zero test may spend, over all the nodes it
-    /// normalises.
-    fn work_per_test(self) -> usize {
-        match self {
-            Budget::Cheap => 50_000,
-            Budget::LastResort => 5_000_000,
-        }
-    }
-}
-
-/// A node's normal form in the tower of id `tower`, `None` where it could not be had within
-/// `budget` (asked again under a larger one).
-pub(crate) struct Memo {
-    tower: u64,
-    form: Option<NormalForm>,
-    budget: Budget,
-}
 
 /// Normal forms with a coefficient larger than this (numerator plus denominator bits) are
 /// abandoned: rational arithmetic on them costs more than the separation bound would.
@@ -105,14 +62,6 @@ thread_local! {
 /// Ids of towers, unique in the process: a normal form memoized on a node is valid only in the
 /// tower it was computed in.
 static NEXT_TOWER: AtomicU64 = AtomicU64::new(0);
-
-/// A product of symbols, in increasing order: square roots at most once each (their squares
-/// are rewritten), atoms as often as their power.
-type Monomial = Vec<u32>;
-
-/// An element of the tower in normal form.
-#[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
-pub(crate) struct NormalForm(BTreeMap<Monomial, Rational>);
 
 struct Tower {
     id: u64,
