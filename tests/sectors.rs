@@ -15,6 +15,7 @@ use exact_geodesics::{
     propagate_vertices, PropagateOptions, Scalar, SurfacePoint, TriMesh, VertexField, VertexId,
 };
 use proptest::prelude::*;
+use proptest::test_runner::RngSeed;
 
 fn run<S: Scalar>(mesh: &TriMesh, source: u32, threads: usize) -> VertexField<'_, S> {
     let options = PropagateOptions::default().with_threads(threads);
@@ -170,7 +171,13 @@ fn runs_that_cannot_be_split_run_on_one_thread() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig {
+        cases: 200,
+        // The same cases on every run, so that CI is repeatable (as the corpus suites'): a
+        // failure seen once is seen again.
+        rng_seed: RngSeed::Fixed(11),
+        ..ProptestConfig::default()
+    })]
 
     /// On the degeneracy corpus, two sectors are right wherever one thread is (against the
     /// exact backend), and never wrong where one thread is not.
