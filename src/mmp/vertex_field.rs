@@ -116,8 +116,7 @@ pub fn propagate_vertices_with_progress<'m, S: Scalar>(
 
 /// The geodesic distance of every vertex, in file order, from the nearest of `sources`
 /// (`f64::INFINITY` where unreachable): [`propagate_vertices`] and
-/// [`VertexField::vertex_distances`] in one call, for
-/// the common case.
+/// [`VertexField::vertex_distances`] in one call, for the common case.
 ///
 /// # Errors
 /// As [`propagate`](crate::propagate).
