@@ -14,15 +14,15 @@
 //! there are shorter, propagates that ground again: with the engines' fronts held together (a
 //! scratch build in which an engine waited while ahead), rocker_arm from v0 created about as
 //! many wedges in all as one thread (326k against 323k; 378k running free) in the same time.
-//! The proxy's weak point is the directions. Past a saddle vertex, geodesics leave the source
+//! The proxy errs first in the directions. Past a saddle vertex, geodesics leave the source
 //! in that vertex's direction, so many vertices share a direction, which the polar coordinates
 //! spread and shift: from v0 of rocker_arm the sides chosen gave the engines 62 % and 38 % of
 //! the wedges (6,291 and 3,753 vertices), and moving one side by 0.15 of a face (3.3 to 3.45)
 //! moved a quarter of them from one engine to the other; sides at 0.7 and 3.5 gave 48 and 52 %.
-//! Better directions alone would not do: with each vertex's true direction (from the traced
-//! paths of a one-thread run) and sides on whole cells, the vertices halve but the wedges do
-//! not (fandisk from v0: 49 % of the vertices, 38 % of the wedges; stanford_bunny from v1000:
-//! 53 and 58 %). An engine's share is that of the final wedges on the edges of its vertices
+//! Then in the work: with each vertex's true direction (from the traced paths of a one-thread
+//! run) and sides on whole cells of the fan, the vertices halve but the wedges do not
+//! (fandisk from v0: 49 % of the vertices, 38 % of the wedges; stanford_bunny from v1000: 53
+//! and 58 %). An engine's share is that of the final wedges on the edges of its vertices
 //! (within 1 % on those runs), which the vertices' count does not foretell.
 
 use super::fan::{fan, open_fan, Fan};
