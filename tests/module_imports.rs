@@ -1,7 +1,7 @@
 //! The library's files import one another without cycles (ARCHITECTURE.md): each file of
-//! `src/` (the command line's aside) is a node, each module it names by a `crate::`, `super::`
-//! or `self::` path, or by a child module's name in a `use`, an edge; a file's own ancestors
-//! are not counted (a child reads its parent's items), nor are its tests.
+//! `src/` but the command line's is a node, each module it names by a `crate::`, `super::` or
+//! `self::` path, or by a child module's name in a `use`, an edge; a file's own ancestors are
+//! not counted (a child reads its parent's items), nor are its tests.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
