@@ -125,16 +125,24 @@ fn resolve(from: &Module, path: &str, modules: &BTreeSet<Module>) -> Option<Modu
         rest = &rest[1..];
     }
     let mut found = None;
-    let mut module = base.clone();
     for segment in rest {
-        module.push(segment.to_string());
-        if modules.contains(&module) {
-            found = Some(module.clone());
+        base.push(segment.to_string());
+        if modules.contains(&base) {
+            found = Some(base.clone());
         } else {
             break;
         }
     }
     found
+}
+
+/// The modules that the code of `from` imports, its ancestors left out.
+fn imports(from: &Module, code: &str, modules: &BTreeSet<Module>) -> BTreeSet<Module> {
+    paths_in(&code_of(code))
+        .iter()
+        .filter_map(|p| resolve(from, p, modules))
+        .filter(|m| !from.starts_with(m))
+        .collect()
 }
 
 /// The strongly connected components of more than one module (Tarjan).
@@ -197,12 +205,8 @@ fn import_graph(src: &Path) -> BTreeMap<Module, BTreeSet<Module>> {
     let mut edges = BTreeMap::new();
     for file in &files {
         let from = module_of(src, file);
-        let code = code_of(&std::fs::read_to_string(file).expect("a source file"));
-        let to: BTreeSet<Module> = paths_in(&code)
-            .iter()
-            .filter_map(|p| resolve(&from, p, &modules))
-            .filter(|m| !from.starts_with(m))
-            .collect();
+        let code = std::fs::read_to_string(file).expect("a source file");
+        let to = imports(&from, &code, &modules);
         edges.insert(from, to);
     }
     edges
@@ -233,11 +237,7 @@ fn a_cycle_through_a_use_tree_is_found() {
         ("b", "fn f() { super::a::g() }"),
     ] {
         let from = vec![from.to_string()];
-        let to = paths_in(&code_of(code))
-            .iter()
-            .filter_map(|p| resolve(&from, p, &modules))
-            .filter(|m| !from.starts_with(m))
-            .collect();
+        let to = imports(&from, code, &modules);
         graph.insert(from, to);
     }
     let found = cycles(&graph);
