@@ -4,6 +4,7 @@
 //! order. It is built by [`TriMesh::new`], which validates at the door: hard errors become a
 //! [`MeshError`], usable oddities a [`ValidationReport`].
 
+mod corners;
 mod error;
 mod handle;
 mod ids;
