@@ -23,20 +23,24 @@ pub(super) struct Corners {
 }
 
 impl Corners {
-    /// Over the faces for which `counted` holds, of a mesh of `vertex_count` vertices, with
-    /// `scaled(v)` vertex `v`'s position times `unit_scale`. Each face's angles are added to its
-    /// corners' sums in the order of the faces.
-    pub(super) fn new(
-        vertex_count: usize,
-        faces: &[[u32; 3]],
-        (scaled, unit_scale): (impl Fn(usize) -> DVec3, f64),
-        counted: impl Fn(usize) -> bool,
-    ) -> Corners {
-        let mut corners = Corners {
+    /// No face counted yet, on a mesh of `vertex_count` vertices.
+    pub(super) fn new(vertex_count: usize) -> Corners {
+        Corners {
             angle_sum: vec![0.0; vertex_count],
             on_degenerate_face: vec![false; vertex_count],
             zero_area_faces: Vec::new(),
-        };
+        }
+    }
+
+    /// Counts the faces for which `counted` holds, with `scaled(v)` vertex `v`'s position
+    /// times `unit_scale`: each face's angles are added to its corners' sums in the order of
+    /// the faces. Allocates only for degenerate faces.
+    pub(super) fn count(
+        &mut self,
+        faces: &[[u32; 3]],
+        (scaled, unit_scale): (impl Fn(usize) -> DVec3, f64),
+        counted: impl Fn(usize) -> bool,
+    ) {
         for (fi, f) in faces.iter().enumerate().filter(|&(fi, _)| counted(fi)) {
             let p = f.map(|c| scaled(c as usize));
             // Side `k` joins corners `k` and `k + 1`; its length is its edge's (negating a
@@ -45,28 +49,27 @@ impl Corners {
             let scaled_lengths = sides.map(length);
             let units = sides.map(unit);
             if is_degenerate(scaled_lengths, units) {
-                corners.zero_area_faces.push(FaceId(fi as u32));
+                self.zero_area_faces.push(FaceId(fi as u32));
                 for &v in f {
-                    corners.on_degenerate_face[v as usize] = true;
+                    self.on_degenerate_face[v as usize] = true;
                 }
             }
             let lengths = scaled_lengths.map(|l| l / unit_scale);
             let longest = lengths.iter().fold(0.0f64, |m, &l| m.max(l));
             for (k, &l) in lengths.iter().enumerate() {
                 if l < SHORT_EDGE * longest {
-                    corners.on_degenerate_face[f[k] as usize] = true;
-                    corners.on_degenerate_face[f[(k + 1) % 3] as usize] = true;
+                    self.on_degenerate_face[f[k] as usize] = true;
+                    self.on_degenerate_face[f[(k + 1) % 3] as usize] = true;
                 }
             }
             // The angle at corner `k` lies between side `k` and side `k + 2` reversed.
             for k in 0..3 {
-                corners.angle_sum[f[k] as usize] += match (units[k], units[(k + 2) % 3]) {
+                self.angle_sum[f[k] as usize] += match (units[k], units[(k + 2) % 3]) {
                     (Some(u), Some(w)) => between_units(u, -w),
                     _ => 0.0,
                 };
             }
         }
-        corners
     }
 }
 
@@ -144,7 +147,7 @@ mod tests {
 
     #[test]
     fn corners_are_counted_once_on_a_mesh_large_enough_for_a_thread() {
-        let n = 48;
+        let n = ((CONCURRENT_FACES / 2) as f64).sqrt().ceil() as usize;
         assert!(2 * n * n >= CONCURRENT_FACES);
         corners_of_a_grid_with_copies(n);
     }

@@ -287,9 +287,13 @@ pub(super) fn straight_crease(v: usize, faces: &[[u32; 3]], at: impl Fn(usize) -
     false
 }
 
-/// Faces from which [`Topology::build`] works out the corners' geometry on a thread of its own:
-/// below, a thread's start (some 50 microseconds) would be a large part of what it saves.
-pub(super) const CONCURRENT_FACES: usize = 4096;
+/// Faces from which [`Topology::build`] works out the corners' geometry on a thread of its own.
+/// A thread costs memory, its malloc arena and stack: fandisk's peak (13k faces, one engine)
+/// rose by 0.5 MiB, 5 %. From this size on the build saves a third of its time
+/// (stanford_bunny, 69k faces: 32 -> 21-24 ms, medians of 21) for a peak unchanged on two
+/// threads, whose second engine's thread then takes the same arena, and 1 MiB (3 %) higher on
+/// one.
+pub(super) const CONCURRENT_FACES: usize = 50_000;
 
 /// Compressed adjacency lists: `start[v]..start[v + 1]` indexes `list`, each list in the
 /// order of `pairs`. A counting sort (linear, and stable as a sort of the pairs by `v` is).
@@ -460,14 +464,17 @@ impl UnionFind {
 
 impl Topology {
     pub(super) fn build(positions: &[DVec3], faces: &[[u32; 3]]) -> (Topology, ValidationReport) {
-        std::thread::scope(|scope| Self::build_in(scope, positions, faces))
+        if faces.len() >= CONCURRENT_FACES {
+            std::thread::scope(|scope| Self::build_in(Some(scope), positions, faces))
+        } else {
+            Self::build_in(None, positions, faces)
+        }
     }
 
     /// [`Topology::build`], with the corners' geometry ([`Corners`]) worked out on a thread of
-    /// `scope` beside the edges' numbering on a large mesh: mostly arc tangents, a third of the
-    /// build on one thread (stanford_bunny 34 -> 27 ms, rocker_arm 10 -> 7 ms; medians of 21).
+    /// `scope`, if given, beside the edges' numbering: mostly arc tangents.
     fn build_in<'s>(
-        scope: &'s std::thread::Scope<'s, '_>,
+        scope: Option<&'s std::thread::Scope<'s, '_>>,
         positions: &'s [DVec3],
         faces: &'s [[u32; 3]],
     ) -> (Topology, ValidationReport) {
@@ -476,11 +483,16 @@ impl Topology {
         // neither overflow nor underflow whatever the model's units.
         let unit_scale = unit_scale(positions);
         let scaled = move |v: usize| positions[v] * unit_scale;
-        let corners_of = move |counted: &dyn Fn(usize) -> bool| {
-            Corners::new(nv, faces, (scaled, unit_scale), counted)
+        let corners_of = move |mut corners: Corners, counted: &dyn Fn(usize) -> bool| {
+            corners.count(faces, (scaled, unit_scale), counted);
+            corners
         };
-        let all_corners =
-            (faces.len() >= CONCURRENT_FACES).then(|| scope.spawn(move || corners_of(&|_| true)));
+        let all_corners = scope.map(|scope| {
+            // Allocated on the caller's thread, with the mesh's other tables, not in the
+            // thread's malloc arena.
+            let corners = Corners::new(nv);
+            scope.spawn(move || corners_of(corners, &|_| true))
+        });
         let mut report = ValidationReport::default();
         let (mut edges, face_edges) = number_edges(nv, faces);
         let mut extra: Vec<(usize, FaceId)> = Vec::new();
@@ -580,6 +592,19 @@ impl Topology {
                 .map(|h| (edges[h / 2].vertices[h % 2].index(), EdgeId((h / 2) as u32))),
         );
 
+        // A copy's angles are its original's: counted once. Copies are rare; the thread, if
+        // any, counted every face.
+        let counted = |fi: usize| !is_copy[fi];
+        let Corners {
+            angle_sum,
+            on_degenerate_face,
+            zero_area_faces,
+        } = match all_corners {
+            Some(all) if !is_copy.contains(&true) => all.join().expect("the corners' geometry"),
+            _ => corners_of(Corners::new(nv), &counted),
+        };
+        report.zero_area_faces = zero_area_faces;
+
         // Geodesics may bend at the ends of boundary edges and of edges with more than two
         // faces (where a path may turn into any of them).
         let mut boundary_vertex = vec![false; nv];
@@ -620,32 +645,6 @@ impl Topology {
                 boundary_vertex[v] = true;
             }
         }
-
-        let mut components = UnionFind::new(faces.len());
-        for ei in 0..edges.len() {
-            let mut around = faces_of(ei);
-            if let Some(first) = around.next() {
-                for other in around {
-                    components.union(first.0, other.0);
-                }
-            }
-        }
-        report.components = (0..faces.len() as u32)
-            .filter(|&f| !is_copy[f as usize] && components.find(f) == f)
-            .count();
-
-        // A copy's angles are its original's: counted once. Copies are rare; the thread, if
-        // any, counted every face.
-        let counted = |fi: usize| !is_copy[fi];
-        let Corners {
-            angle_sum,
-            on_degenerate_face,
-            zero_area_faces,
-        } = match all_corners {
-            Some(all) if !is_copy.contains(&true) => all.join().expect("the corners' geometry"),
-            _ => corners_of(&counted),
-        };
-        report.zero_area_faces = zero_area_faces;
 
         // Vertices where the surface is not a manifold, whatever their stars look like.
         let mut not_manifold = vec![false; nv];
@@ -694,6 +693,19 @@ impl Topology {
                     && flat_star(v, &corners, scaled, Some(straight))
             })
             .collect();
+
+        let mut components = UnionFind::new(faces.len());
+        for ei in 0..edges.len() {
+            let mut around = faces_of(ei);
+            if let Some(first) = around.next() {
+                for other in around {
+                    components.union(first.0, other.0);
+                }
+            }
+        }
+        report.components = (0..faces.len() as u32)
+            .filter(|&f| !is_copy[f as usize] && components.find(f) == f)
+            .count();
 
         (
             Topology {
