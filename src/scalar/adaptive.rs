@@ -373,7 +373,7 @@ impl Scalar for Adaptive {
         hi.0 - lo.0 > Resolution::EXTENT * scale.0
     }
 
-    /// As `f64` does ([`float::fans_out`]).
+    /// As `f64` does (`float::fans_out`).
     #[inline(always)]
     fn fans_out(lo: &Self, hi: &Self, x: &Self, y: &Self) -> bool {
         float::fans_out(lo.0, hi.0, x.0, y.0)
@@ -425,10 +425,10 @@ impl Scalar for Adaptive {
             && (a.y.0.abs() - b.y.0.abs()).abs() <= same
     }
 
-    /// The crossings by exact signs of polynomials in the `f64` inputs ([`roots::crossings`]),
-    /// placed from exact values ([`root_positions`]); on each stretch between them, the lower
+    /// The crossings by exact signs of polynomials in the `f64` inputs (`roots::crossings`),
+    /// placed from exact values (`root_positions`); on each stretch between them, the lower
     /// wedge by the sign of `D_a(t) - D_b(t)` at the stretch's middle or at an end of the range
-    /// ([`float::lower_on`]), taken where the two differ by more than
+    /// (`float::lower_on`), taken where the two differ by more than
     /// [`Resolution::DISTANCE`]: each distance is evaluated to within `4 eps` of itself, so
     /// that sign is certain. Closer than that everywhere asked is a tie (the existing wedge
     /// keeps the stretch): the sigmas are constructions, and a wedge better by less would only

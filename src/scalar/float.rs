@@ -97,7 +97,7 @@ impl Scalar for f64 {
         false
     }
 
-    /// In `f64` arithmetic on the constructed values, with the margin [`FRONT_MARGIN`].
+    /// In `f64` arithmetic on the constructed values, with the margin `FRONT_MARGIN`.
     #[inline(always)]
     fn front_passed(d: &SourceDistance<f64>, lo: &f64, hi: &f64, front: f64) -> bool {
         farthest(d, *lo, *hi) * FRONT_MARGIN <= front
@@ -173,8 +173,8 @@ impl Scalar for f64 {
         )
     }
 
-    /// The roots by [`roots_in`]; on each stretch between them, the lower function where the
-    /// difference is clearest ([`lower_on`]): the roots' positions are rounded, and near a
+    /// The roots by `roots_in`; on each stretch between them, the lower function where the
+    /// difference is clearest (`lower_on`): the roots' positions are rounded, and near a
     /// near-double root they move far, so owners are not inferred by alternation.
     fn bisector(
         a: &SourceDistance<f64>,

@@ -227,7 +227,7 @@ pub trait Scalar: Field {
 
     /// Whether the point `(x, height)` in the frame of an edge of length `length`, its foot
     /// inside the edge (`0 < x < length`, `height >= 0`), lies on the edge's line: the middle
-    /// corner of a degenerate face is then a point of its opposite edge [MMP87]. Exactly
+    /// corner of a degenerate face is then a point of its opposite edge \[MMP87\]. Exactly
     /// `height = 0` for number types whose constructions are exact. One that rounds them
     /// cannot tell a height at its resolution from zero (the rays through such a corner turn by
     /// that height over their length); taking the point onto the line moves the distances
@@ -357,7 +357,7 @@ pub trait Scalar: Field {
     /// Whether the front of the propagation, at `front` (the `f64` key of the wedge popped last:
     /// every wedge reaching an edge later gives distances no nearer than it, up to the rounding
     /// of keys), lies beyond every distance the distance function `d` gives on `[lo, hi]`, by
-    /// a margin that covers that rounding ([`FRONT_MARGIN`]): then a wedge arriving later
+    /// a margin that covers that rounding (`FRONT_MARGIN`): then a wedge arriving later
     /// loses every point of the range to this one, and the edge's wedges may be given up
     /// ([`propagate_vertices`](crate::propagate_vertices)). `false` is always safe (the wedges
     /// are kept), so a backend that cannot certify `true` answers `false`. `D` is convex on

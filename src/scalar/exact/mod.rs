@@ -627,8 +627,8 @@ impl Scalar for Real {
     }
 
     /// Certified on enclosures: the upper end of an interval enclosure of `D` at the range's
-    /// ends (from the operands' [`Real::narrow_enclosure`]s, which the engine's `f64` values
-    /// of them already computed), times [`FRONT_CERTIFIED_MARGIN`], at most `front`. Not a
+    /// ends (from the operands' `Real::narrow_enclosure`s, which the engine's `f64` values
+    /// of them already computed), times `FRONT_CERTIFIED_MARGIN`, at most `front`. Not a
     /// decision of the run's counts: `false` keeps the wedges, which is always right.
     fn front_passed(d: &SourceDistance<Self>, lo: &Self, hi: &Self, front: f64) -> bool {
         let enclose = |v: &Real| {
@@ -661,7 +661,7 @@ impl Scalar for Real {
         x.compare(lo) != Ordering::Less && x.compare(hi) != Ordering::Greater
     }
 
-    /// `false` only where the foot is clearly outside ([`CertifiedSign::clear_sign`]): a foot
+    /// `false` only where the foot is clearly outside (`CertifiedSign::clear_sign`): a foot
     /// at a range end is no decision.
     fn foot_within(x: &Self, lo: &Self, hi: &Self, _closed: bool) -> bool {
         let clearly = |end: &Self, side| {
@@ -685,7 +685,7 @@ impl Scalar for Real {
         roots::same_distance_function(a, b) == Some(true)
     }
 
-    /// By certified signs ([`CertifiedSign::proved_sign`]).
+    /// By certified signs (`CertifiedSign::proved_sign`).
     fn proved_same_distance_function(a: &SourceDistance<Self>, b: &SourceDistance<Self>) -> bool {
         roots::same_distance_function_by(a, b, <Real as CertifiedSign>::proved_sign) == Some(true)
     }
@@ -707,10 +707,10 @@ impl Scalar for Real {
         Self::same_distance_function(a, b, scale)
     }
 
-    /// The crossings by exact signs ([`roots::crossings`]), with the ends' kept values where the
+    /// The crossings by exact signs (`roots::crossings`), with the ends' kept values where the
     /// engine has them (a tie there is then known by structure, not decided again); the lower
     /// wedge on the first stretch by the sign of `a - b` at an end where it is clear
-    /// ([`roots::first_stretch_sign`]), else at the first stretch's middle; the owners then
+    /// (`roots::first_stretch_sign`), else at the first stretch's middle; the owners then
     /// alternate at the crossings.
     fn bisector(
         a: &SourceDistance<Self>,
@@ -723,7 +723,7 @@ impl Scalar for Real {
     }
 
     /// As [`Scalar::bisector`], the zero gap taken from the structure
-    /// ([`roots::SeenStraight`]).
+    /// (`roots::SeenStraight`).
     fn bisector_seen_straight(
         a: &SourceDistance<Self>,
         b: &SourceDistance<Self>,
