@@ -93,3 +93,50 @@ fn a_vertex_on_a_straight_crease_is_told_exactly() {
     let flat = folded_star(0.0, 0.0, 0.0);
     assert!(flat.is_flat_vertex(v) && !flat.is_crease_vertex(v));
 }
+
+/// A hexagonal star around a vertex in the plane where coordinate `axis` is 3/8 (`tilt` 0),
+/// or in a plane tilted from it, every coordinate exact in binary; `lift` added to that
+/// coordinate of one neighbour.
+fn hexagon_star(axis: usize, tilt: f64, lift: f64) -> exact_geodesics::TriMesh {
+    let place = |u: f64, w: f64, extra: f64| {
+        let mut p = [0.0; 3];
+        p[(axis + 1) % 3] = u;
+        p[(axis + 2) % 3] = w;
+        p[axis] = 0.375 + tilt * u + extra;
+        p
+    };
+    let mut positions = vec![place(0.0, 0.0, 0.0)];
+    let ring = [
+        (1.0, 0.0),
+        (0.5, 1.0),
+        (-0.5, 1.0),
+        (-1.0, 0.0),
+        (-0.5, -1.0),
+        (0.5, -1.0),
+    ];
+    for (k, (u, w)) in ring.into_iter().enumerate() {
+        positions.push(place(u, w, if k == 4 { lift } else { 0.0 }));
+    }
+    let faces = (0..6u32).map(|k| [0, 1 + k, 1 + (k + 1) % 6]).collect();
+    exact_geodesics::TriMesh::new(positions, faces).expect("a usable mesh")
+}
+
+/// Flatness is decided exactly whether or not the star lies in a coordinate plane (where
+/// the plane's coordinate alone decides, without orient3d): one neighbour moved off the
+/// plane by one unit in the last place makes the centre a vertex that bends geodesics.
+#[test]
+fn a_star_in_a_coordinate_plane_is_flat_to_the_last_bit() {
+    let v = VertexId(0);
+    for axis in 0..3 {
+        for tilt in [0.0, 0.25] {
+            assert!(
+                hexagon_star(axis, tilt, 0.0).is_flat_vertex(v),
+                "{axis} {tilt}"
+            );
+            let at = 0.375 - 0.5 * tilt;
+            let lifted = hexagon_star(axis, tilt, at.next_up() - at);
+            assert!(!lifted.is_flat_vertex(v), "{axis} {tilt}");
+            assert!(lifted.may_bend_geodesics(v), "{axis} {tilt}");
+        }
+    }
+}

@@ -171,10 +171,15 @@ fn flat_star(
         };
         robust::Coord { x: u, y: v }
     };
-    // A corner of the first face is in its plane: orient3d would say so only in its slow
-    // exact stage, on every face of the star.
-    let on_plane = |q: DVec3| {
-        q == a || q == b || q == c || robust::orient3d(c3(a), c3(b), c3(c), c3(q)) == 0.0
+    // A first face with one coordinate the same at its three corners (not on one line, as
+    // the first turn below checks) lies in the plane where that coordinate has that value: a
+    // point is in it where its coordinate has the value. Flat parts of CAD models often lie
+    // so, and orient3d tells a point in the plane only in its slow exact stage.
+    let axis = (0..3).find(|&i| a[i] == b[i] && b[i] == c[i]);
+    // A corner of the first face is in its plane, without asking orient3d either.
+    let on_plane = |q: DVec3| match axis {
+        Some(i) => q[i] == a[i],
+        None => q == a || q == b || q == c || robust::orient3d(c3(a), c3(b), c3(c), c3(q)) == 0.0,
     };
     let turn = |[p, q, r]: [DVec3; 3]| robust::orient2d(c2(p), c2(q), c2(r)).signum();
     let first = turn([a, b, c]);
