@@ -3,7 +3,7 @@
 //! end of an edge far shorter than its face. Face by face, from positions alone, so that it
 //! can be worked out beside the edges' numbering (`Topology::build`).
 
-use super::vector::{length, unit};
+use super::vector::{angle_of_units, length, unit};
 use super::FaceId;
 use glam::DVec3;
 
@@ -65,17 +65,12 @@ impl Corners {
             // The angle at corner `k` lies between side `k` and side `k + 2` reversed.
             for k in 0..3 {
                 self.angle_sum[f[k] as usize] += match (units[k], units[(k + 2) % 3]) {
-                    (Some(u), Some(w)) => between_units(u, -w),
+                    (Some(u), Some(w)) => angle_of_units(u, -w),
                     _ => 0.0,
                 };
             }
         }
     }
-}
-
-/// The angle between two unit vectors.
-fn between_units(u: DVec3, w: DVec3) -> f64 {
-    length(u.cross(w)).atan2(u.dot(w))
 }
 
 /// Whether a triangle (in unit-scaled coordinates; its sides' lengths and unit directions) is

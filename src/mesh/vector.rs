@@ -62,9 +62,14 @@ pub(crate) fn length(v: DVec3) -> f64 {
 /// does not depend on their magnitudes.
 pub(crate) fn angle(u: DVec3, w: DVec3) -> f64 {
     match (unit(u), unit(w)) {
-        (Some(u), Some(w)) => length(u.cross(w)).atan2(u.dot(w)),
+        (Some(u), Some(w)) => angle_of_units(u, w),
         _ => 0.0,
     }
+}
+
+/// The angle between two unit vectors.
+pub(crate) fn angle_of_units(u: DVec3, w: DVec3) -> f64 {
+    length(u.cross(w)).atan2(u.dot(w))
 }
 
 #[cfg(test)]
