@@ -293,11 +293,11 @@ pub(super) fn straight_crease(v: usize, faces: &[[u32; 3]], at: impl Fn(usize) -
 }
 
 /// Faces from which [`Topology::build`] works out the corners' geometry on a thread of its own.
-/// A thread costs memory, its malloc arena and stack: fandisk's peak (13k faces, one engine)
-/// rose by 0.5 MiB, 5 %. From this size on the build saves a third of its time
-/// (stanford_bunny, 69k faces: 32 -> 21-24 ms, medians of 21) for a peak unchanged on two
-/// threads, whose second engine's thread then takes the same arena, and 1 MiB (3 %) higher on
-/// one.
+/// The thread needs the corners' tables allocated before the edges' numbering; so placed in the
+/// heap, they made fandisk's peak (13k faces, one engine) 0.4-0.5 MiB (5 %) higher, with or
+/// without the thread (a thread alone costs no measurable memory). From this size on the
+/// build saves a third of its time (stanford_bunny, 69k faces: 32 -> 21-24 ms, medians of 21)
+/// for a peak unchanged on two threads and 1 MiB (3 %) higher on one.
 pub(super) const CONCURRENT_FACES: usize = 50_000;
 
 /// Compressed adjacency lists: `start[v]..start[v + 1]` indexes `list`, each list in the
@@ -493,8 +493,7 @@ impl Topology {
             corners
         };
         let all_corners = scope.map(|scope| {
-            // Allocated on the caller's thread, with the mesh's other tables, not in the
-            // thread's malloc arena.
+            // Allocated here: the tables outlive the thread.
             let corners = Corners::new(nv);
             scope.spawn(move || corners_of(corners, &|_| true))
         });
