@@ -340,6 +340,16 @@ impl TriMesh {
         self.topology.wing(&self.faces, e, side.index())
     }
 
+    /// The face on side `side` of an edge, if that side has one (the face of [`TriMesh::wing`],
+    /// read from the edge's record alone).
+    ///
+    /// # Panics
+    /// If `e` is not an edge of the mesh.
+    #[inline]
+    pub fn face_on(&self, e: EdgeId, side: Side) -> Option<FaceId> {
+        self.topology.face_on(e, side.index())
+    }
+
     /// The number of sides of an edge: 2 (side 1 is empty on the boundary), or one per face on
     /// an edge shared by more than two faces.
     ///

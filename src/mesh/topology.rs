@@ -738,14 +738,20 @@ impl Topology {
         extra_of(&self.extra_start, &self.extra_faces, e.index())
     }
 
+    /// The face on side `side` of edge `e`, if there is one.
+    #[inline]
+    pub(super) fn face_on(&self, e: EdgeId, side: usize) -> Option<FaceId> {
+        match side {
+            0 | 1 => self.edges[e.index()].face(side),
+            _ => self.extra_faces(e).get(side - 2).copied(),
+        }
+    }
+
     /// The wing of side `side` of edge `e` (`faces`: the mesh's corners). Worked out on each
     /// call rather than stored: a table of them took 20 bytes per side, as much as the rest of
     /// the topology of a side, for what the face's corners and edges already say.
     pub(super) fn wing(&self, faces: &[[u32; 3]], e: EdgeId, side: usize) -> Option<Wing> {
-        let face = match side {
-            0 | 1 => self.edges[e.index()].face(side)?,
-            _ => *self.extra_faces(e).get(side - 2)?,
-        };
+        let face = self.face_on(e, side)?;
         let corners = faces[face.index()];
         let fe = self.face_edges[face.index()];
         let k = fe

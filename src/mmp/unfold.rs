@@ -152,26 +152,53 @@ fn apex<S: Scalar>(
 
 /// The face on one side of an edge, as the propagation of a wedge across it reads it
 /// ([`FaceLayout`]): everything in one record, where it was read from a dozen arrays indexed by
-/// the edge and by the face's two other edges (a cache miss each, at every wedge). The lengths
-/// of the face's other edges are not copied here: 48 bytes in the `f64` engine, not a 64-byte
-/// cache line, for the largest table of a run (a third of fandisk's heap; the lengths are read
-/// where a point is carried into an edge, not at every wedge).
+/// the edge and by the face's two other edges (a cache miss each, at every wedge). Not copied
+/// here: the lengths of the face's other edges (read where a point is carried into an edge, not
+/// at every wedge) and the face itself (in the edge's record, which the propagation reads
+/// anyway). 40 bytes in the `f64` engine, for the largest table of a run (a third of the heap
+/// at its peak on stanford_bunny and fandisk; 48 bytes with the face and a byte per flag).
 #[derive(Clone, Debug)]
 pub(crate) struct FaceSide<S> {
-    /// The face and its other edges, in the order of the edge's frame.
-    wing: Wing,
+    /// The face's corner opposite the edge.
+    apex_vertex: VertexId,
+    /// The face's other edges, in the order of the edge's frame ([`Wing::near`], [`Wing::far`]).
+    near: EdgeId,
+    far: EdgeId,
     /// The apex in the edge's frame.
     apex: Apex<S>,
-    /// See [`FaceLayout::near_reversed`] and the three fields after it.
-    near_reversed: bool,
-    far_reversed: bool,
-    near_from_apex: bool,
-    far_from_end: bool,
-    /// Whether the near (far) edge has length zero.
-    near_zero_length: bool,
-    far_zero_length: bool,
-    /// Whether the edge has more than two sides (more than two faces share it).
-    more_sides: bool,
+    flags: SideFlags,
+}
+
+/// The yes-or-no facts of a [`FaceSide`], a bit each: see [`FaceLayout::near_reversed`] and the
+/// three fields after it; whether the near (far) edge has length zero; whether the edge has
+/// more than two sides (more than two faces share it). One bit is always set, so that
+/// `Option<FaceSide>` needs no room of its own for `None`.
+#[derive(Clone, Copy, Debug)]
+struct SideFlags(std::num::NonZeroU8);
+
+impl SideFlags {
+    const NEAR_REVERSED: u8 = 1;
+    const FAR_REVERSED: u8 = 1 << 1;
+    const NEAR_FROM_APEX: u8 = 1 << 2;
+    const FAR_FROM_END: u8 = 1 << 3;
+    const NEAR_ZERO_LENGTH: u8 = 1 << 4;
+    const FAR_ZERO_LENGTH: u8 = 1 << 5;
+    const MORE_SIDES: u8 = 1 << 6;
+    /// No flag set: only the bit that is always set.
+    const NONE: SideFlags = SideFlags(std::num::NonZeroU8::new(1 << 7).unwrap());
+
+    /// These flags with `flag` set to `on`.
+    fn with(self, flag: u8, on: bool) -> Self {
+        SideFlags(match on {
+            true => self.0 | flag,
+            false => std::num::NonZeroU8::new(self.0.get() & !flag).expect("the bit always set"),
+        })
+    }
+
+    #[inline]
+    fn has(self, flag: u8) -> bool {
+        self.0.get() & flag != 0
+    }
 }
 
 /// The ends of `e` in the order of its frame.
@@ -335,23 +362,29 @@ impl<S: Scalar> Unfolding<S> {
                 // Whether the other two edges have length zero is set below, once every edge
                 // is measured: a table of the apexes kept until then would take half as much
                 // memory again as the sides.
+                let flags = SideFlags::NONE
+                    .with(SideFlags::NEAR_REVERSED, near_reversed)
+                    .with(SideFlags::FAR_REVERSED, far_reversed)
+                    .with(SideFlags::NEAR_FROM_APEX, near_reversed && anchored[near])
+                    .with(
+                        SideFlags::FAR_FROM_END,
+                        (far_reversed && anchored[far]) || mirrored_far,
+                    )
+                    .with(SideFlags::MORE_SIDES, mesh.side_count(e) > 2);
                 sides[mesh.side_slot(e, side)] = Some(FaceSide {
+                    apex_vertex: wing.apex,
+                    near: wing.near,
+                    far: wing.far,
                     apex,
-                    near_reversed,
-                    far_reversed,
-                    near_from_apex: near_reversed && anchored[near],
-                    far_from_end: (far_reversed && anchored[far]) || mirrored_far,
-                    near_zero_length: false,
-                    far_zero_length: false,
-                    more_sides: mesh.side_count(e) > 2,
-                    wing,
+                    flags,
                 });
             }
         }
         for face in sides.iter_mut().flatten() {
-            let (near, far) = (face.wing.near.index(), face.wing.far.index());
-            face.near_zero_length = zero_length[near];
-            face.far_zero_length = zero_length[far];
+            face.flags = face
+                .flags
+                .with(SideFlags::NEAR_ZERO_LENGTH, zero_length[face.near.index()])
+                .with(SideFlags::FAR_ZERO_LENGTH, zero_length[face.far.index()]);
         }
         Unfolding {
             edge_length,
@@ -388,7 +421,7 @@ impl<S: Scalar> Unfolding<S> {
         }
         let other = Side::from_index(1 - tau.index());
         match &self.sides[mesh.side_slot(e, other)] {
-            Some(face) if face.more_sides => None,
+            Some(face) if face.flags.has(SideFlags::MORE_SIDES) => None,
             _ => Some(other),
         }
     }
@@ -598,20 +631,29 @@ impl<'a, S: Scalar> FaceLayout<'a, S> {
         side: Side,
     ) -> Option<Self> {
         let face = unfolding.sides[mesh.side_slot(e, side)].as_ref()?;
+        let wing = Wing {
+            face: mesh
+                .face_on(e, side)
+                .expect("a side with a layout has a face"),
+            apex: face.apex_vertex,
+            near: face.near,
+            far: face.far,
+        };
+        let flag = |f: u8| face.flags.has(f);
         Some(FaceLayout {
-            wing: face.wing,
+            wing,
             length: unfolding.length(e),
             apex_x: &face.apex.x,
             apex_far_x: &face.apex.far_x,
             apex_h: &face.apex.h,
-            near_length: unfolding.length(face.wing.near),
-            far_length: unfolding.length(face.wing.far),
-            near_reversed: face.near_reversed,
-            far_reversed: face.far_reversed,
-            near_from_apex: face.near_from_apex,
-            far_from_end: face.far_from_end,
-            near_zero_length: face.near_zero_length,
-            far_zero_length: face.far_zero_length,
+            near_length: unfolding.length(face.near),
+            far_length: unfolding.length(face.far),
+            near_reversed: flag(SideFlags::NEAR_REVERSED),
+            far_reversed: flag(SideFlags::FAR_REVERSED),
+            near_from_apex: flag(SideFlags::NEAR_FROM_APEX),
+            far_from_end: flag(SideFlags::FAR_FROM_END),
+            near_zero_length: flag(SideFlags::NEAR_ZERO_LENGTH),
+            far_zero_length: flag(SideFlags::FAR_ZERO_LENGTH),
         })
     }
 
@@ -799,6 +841,33 @@ mod tests {
     use super::*;
     use crate::scalar::{Adaptive, Real, Ring};
 
+    #[test]
+    fn a_side_of_the_f64_engine_takes_40_bytes_with_or_without_a_face() {
+        assert_eq!(std::mem::size_of::<Option<FaceSide<f64>>>(), 40);
+    }
+
+    /// Each flag of a side reads back as it was set, whatever the others are.
+    #[test]
+    fn the_flags_of_a_side_are_independent() {
+        let all = [
+            SideFlags::NEAR_REVERSED,
+            SideFlags::FAR_REVERSED,
+            SideFlags::NEAR_FROM_APEX,
+            SideFlags::FAR_FROM_END,
+            SideFlags::NEAR_ZERO_LENGTH,
+            SideFlags::FAR_ZERO_LENGTH,
+            SideFlags::MORE_SIDES,
+        ];
+        for pattern in 0..1u32 << all.len() {
+            let on = |i: usize| pattern & (1 << i) != 0;
+            let flags = (0..all.len()).fold(SideFlags::NONE, |f, i| f.with(all[i], on(i)));
+            for (i, &flag) in all.iter().enumerate() {
+                assert_eq!(flags.has(flag), on(i), "pattern {pattern:b}, flag {i}");
+                assert_eq!(flags.with(flag, !on(i)).has(flag), !on(i));
+            }
+        }
+    }
+
     /// Rays from a pseudo-source straight above the apex's shadow pass it on the side of the
     /// point of the edge they go through, and through it exactly at the shadow.
     fn rays_pass_the_apex_on_their_side<S: Scalar>() {
@@ -824,11 +893,6 @@ mod tests {
         assert_eq!(layout.ray_side(&s, layout.apex_x), Ordering::Equal);
         let three_quarters = unfolding.length(e).clone() * &S::from_f64(0.75);
         assert_eq!(layout.ray_side(&s, &three_quarters), Ordering::Greater);
-    }
-
-    #[test]
-    fn a_face_side_of_the_f64_engine_takes_48_bytes() {
-        assert_eq!(std::mem::size_of::<Option<FaceSide<f64>>>(), 48);
     }
 
     #[test]
