@@ -25,6 +25,10 @@ pub(crate) struct VertexDistance<S: Scalar> {
     pub(crate) source: SourceId,
     /// The path whose length the distance is, where the run proves ties by symmetry.
     pub(crate) path: S::Kept<Path>,
+    /// Whether the distance improved since the vertex last acted as a pseudo-source. Here,
+    /// not in a table of its own: its spare values also tell `None` from a distance, so that
+    /// `Option<VertexDistance>` takes 24 bytes in the `f64` engine, not 32 and the table's 1.
+    pending_emission: bool,
 }
 
 /// What an event is about: a wedge of an edge list (as long as it is there), a vertex whose
@@ -102,10 +106,12 @@ pub(crate) type Closing = AtKey<EdgeId>;
 /// The queue of events and the vertices' distances.
 pub(crate) struct Front<S: Scalar> {
     vertices: Vec<Option<VertexDistance<S>>>,
-    /// Whether a vertex's distance improved since it last acted as a pseudo-source.
-    pending_emission: Vec<bool>,
-    /// The straight way by which each vertex got its distance, where it came from a wedge.
+    /// The straight way by which each vertex that acts as a pseudo-source (the only ones that
+    /// read theirs, when they emit) got its distance, where it came from a wedge: at
+    /// `arrival_slot[v]`, a slot only for those vertices ([`NO_SLOT`] for the others; a slot
+    /// takes 32 bytes in the `f64` engine, its number 4).
     arrivals: Vec<Option<Arrival>>,
+    arrival_slot: Vec<u32>,
     queue: RadixQueue<EventKind>,
     /// The wedges of [`Front::push_tied`] until they are due.
     tied: Vec<Option<(Wedge<S>, Provenance<S>)>>,
@@ -122,13 +128,24 @@ pub(crate) struct Front<S: Scalar> {
 }
 
 impl<S: Scalar> Front<S> {
-    /// An empty queue and no vertex reached, on a mesh of `vertex_count` vertices; the
-    /// vertices' distances are published to `published`, if given.
-    pub(crate) fn new(vertex_count: usize, published: Option<Arc<SharedBounds>>) -> Self {
+    /// An empty queue and no vertex of `mesh` reached; the vertices' distances are published to
+    /// `published`, if given.
+    pub(crate) fn new(mesh: &TriMesh, published: Option<Arc<SharedBounds>>) -> Self {
+        let vertex_count = mesh.vertex_count();
+        let mut slots = 0;
+        let arrival_slot = (0..vertex_count as u32)
+            .map(|v| match acts_as_pseudo_source::<S>(mesh, VertexId(v)) {
+                true => {
+                    slots += 1;
+                    slots - 1
+                }
+                false => NO_SLOT,
+            })
+            .collect();
         Front {
             vertices: vec![None; vertex_count],
-            pending_emission: vec![false; vertex_count],
-            arrivals: vec![None; vertex_count],
+            arrivals: vec![None; slots as usize],
+            arrival_slot,
             queue: RadixQueue::new(),
             tied: Vec::new(),
             closing: BinaryHeap::new(),
@@ -204,19 +221,29 @@ impl<S: Scalar> Front<S> {
     /// The distance, source and path of a vertex whose distance improved since it last acted
     /// as a pseudo-source; the vertex is then no longer pending.
     pub(crate) fn take_emission(&mut self, v: VertexId) -> Option<(S, SourceId, S::Kept<Path>)> {
-        let known = self.vertices[v.index()].as_ref()?;
-        std::mem::take(&mut self.pending_emission[v.index()])
+        let known = self.vertices[v.index()].as_mut()?;
+        std::mem::take(&mut known.pending_emission)
             .then(|| (known.distance.clone(), known.source, known.path.clone()))
     }
 
     /// The straight way by which a vertex got its present distance from a wedge, if it did.
     pub(crate) fn arrival(&self, v: VertexId) -> Option<&Arrival> {
-        self.arrivals[v.index()].as_ref()
+        let slot = self.arrival_slot[v.index()];
+        self.arrivals.get(slot as usize)?.as_ref()
+    }
+
+    /// Sets the arrival of `v`, if it acts as a pseudo-source (else it is never read).
+    fn set_arrival(&mut self, v: VertexId, arrival: Option<Arrival>) {
+        if let Some(a) = self.arrivals.get_mut(self.arrival_slot[v.index()] as usize) {
+            *a = arrival;
+        }
     }
 
     /// Marks a vertex as having acted as a pseudo-source at its present distance.
     pub(crate) fn emitted(&mut self, v: VertexId) {
-        self.pending_emission[v.index()] = false;
+        if let Some(known) = &mut self.vertices[v.index()] {
+            known.pending_emission = false;
+        }
     }
 
     /// Lowers a vertex's distance if `distance` is better, and says whether it was; a vertex
@@ -230,29 +257,29 @@ impl<S: Scalar> Front<S> {
         distance: S,
         (source, path): (SourceId, S::Kept<Path>),
     ) -> bool {
-        let slot = &mut self.vertices[v.index()];
-        match slot {
+        match &self.vertices[v.index()] {
             Some(known) if distance.compare_distance(&known.distance) != Ordering::Less => {
                 return false
             }
             Some(_) => {}
             None => self.reached += 1,
         }
-        self.arrivals[v.index()] = None;
+        self.set_arrival(v, None);
         let approx = distance.to_f64();
         if let Some(published) = &self.published {
             published.lower(v, approx);
         }
         let twin_distance = unfolding.has_twin(v).then(|| distance.clone());
         let twin_path = twin_distance.as_ref().map(|_| path.clone());
-        *slot = Some(VertexDistance {
+        let pending_emission = self.arrival_slot[v.index()] != NO_SLOT;
+        self.vertices[v.index()] = Some(VertexDistance {
             distance,
             approx,
             source,
             path,
+            pending_emission,
         });
-        if acts_as_pseudo_source::<S>(mesh, v) {
-            self.pending_emission[v.index()] = true;
+        if pending_emission {
             self.queue.push(approx, EventKind::Vertex(v));
         }
         if let (Some(distance), Some(path)) = (twin_distance, twin_path) {
@@ -283,7 +310,7 @@ impl<S: Scalar> Front<S> {
         let d = S::at_least(d, || unfolding.straight_bound(mesh, w, v, sources));
         let improved = self.improve_vertex((mesh, unfolding), v, d, (w.source, path));
         if improved && straight {
-            self.arrivals[v.index()] = Some(Arrival::of(w));
+            self.set_arrival(v, Some(Arrival::of(w)));
         }
         improved
     }
@@ -317,6 +344,9 @@ impl<S: Scalar> Front<S> {
     }
 }
 
+/// No slot in [`Front`]'s arrivals: the vertex never acts as a pseudo-source.
+const NO_SLOT: u32 = u32::MAX;
+
 /// Whether vertex `v`, once reached, sends wedges of its own as a pseudo-source. A vertex on a
 /// straight crease bends no geodesic (its angle sum is exactly 2 pi); number types that keep
 /// values prove the ties of the images passing it on either side by structure (`crease.rs`)
@@ -329,6 +359,47 @@ pub(crate) fn acts_as_pseudo_source<S: Scalar>(mesh: &TriMesh, v: VertexId) -> b
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::mesh::shapes;
+
+    #[test]
+    fn a_vertex_distance_of_the_f64_engine_takes_24_bytes_with_or_without_a_distance() {
+        assert_eq!(std::mem::size_of::<Option<VertexDistance<f64>>>(), 24);
+    }
+
+    /// Only vertices that act as pseudo-sources have a slot for their arrival, and only they
+    /// wait to emit once reached; the others' arrivals are dropped unread.
+    #[test]
+    fn arrivals_are_kept_for_the_vertices_that_act_as_pseudo_sources() {
+        // A flat grid: its interior vertices are flat, its boundary ones bend geodesics.
+        let mesh = shapes::grid(4, 4, 1.0, 1.0);
+        let sources = [SurfacePoint::Vertex(VertexId(0))];
+        let unfolding = Unfolding::<f64>::new(&mesh, &sources);
+        let mut front = Front::<f64>::new(&mesh, None);
+        let acting: Vec<bool> = (0..mesh.vertex_count() as u32)
+            .map(|v| acts_as_pseudo_source::<f64>(&mesh, VertexId(v)))
+            .collect();
+        assert!(acting.contains(&true) && acting.contains(&false));
+        assert_eq!(front.arrivals.len(), acting.iter().filter(|&&a| a).count());
+        let w = Wedge {
+            edge: EdgeId(0),
+            b0: 0.0,
+            b1: 1.0,
+            source_x: 0.5,
+            source_y: 2.0,
+            sigma: 0.0,
+            tau: crate::mesh::Side::FIRST,
+            pseudo_source: crate::mmp::PseudoSource::Source(SourceId(0)),
+            source: SourceId(0),
+        };
+        for v in 0..mesh.vertex_count() as u32 {
+            let v = VertexId(v);
+            let surface = (&mesh, &unfolding, &sources[..]);
+            assert!(front.offer_vertex(surface, v, (10.0, ()), (&w, true)));
+            assert_eq!(front.arrival(v).is_some(), acting[v.index()], "{v:?}");
+            assert_eq!(front.take_emission(v).is_some(), acting[v.index()], "{v:?}");
+            assert!(front.take_emission(v).is_none());
+        }
+    }
 
     /// The heap's integer order is `f64::total_cmp` reversed (the nearest first), and the key
     /// comes back bit for bit.

@@ -421,10 +421,7 @@ impl<'m, S: Scalar> Engine<'m, S> {
                 options.record_decisions,
                 options.vertices_only,
             ),
-            front: Front::new(
-                mesh.vertex_count(),
-                sector.as_ref().map(|s| Arc::clone(s.1)),
-            ),
+            front: Front::new(mesh, sector.as_ref().map(|s| Arc::clone(s.1))),
             max_distance,
             precision_cap: options.precision_cap,
             stop,
