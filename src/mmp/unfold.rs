@@ -155,8 +155,8 @@ fn apex<S: Scalar>(
 /// the edge and by the face's two other edges (a cache miss each, at every wedge). Not copied
 /// here: the lengths of the face's other edges (read where a point is carried into an edge, not
 /// at every wedge) and the face itself (in the edge's record, which the propagation reads
-/// anyway). 40 bytes in the `f64` engine, for the largest table of a run (a third of the heap
-/// at its peak on stanford_bunny and fandisk; 48 bytes with the face and a byte per flag).
+/// anyway). 40 bytes in the `f64` engine, for the largest table of a run (at 48 bytes, with the
+/// face and a byte per flag, a third of the heap at its peak on stanford_bunny and fandisk).
 #[derive(Clone, Debug)]
 pub(crate) struct FaceSide<S> {
     /// The face's corner opposite the edge.
